@@ -1,0 +1,36 @@
+# gcx — the two commands: `make demo` and `make test`. Both install what is missing first.
+BUILD ?= build
+JOBS ?= $(shell nproc)
+APT_PACKAGES := antlr4 libantlr4-runtime-dev libeigen3-dev libfmt-dev libcli11-dev \
+  libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev librapidcheck-dev \
+  cmake g++ make time
+ORACLE_PACKAGES := linuxcnc-uspace
+
+.PHONY: deps build demo test bench format clean
+
+deps:
+	@scripts/install-deps.sh $(APT_PACKAGES) -- $(ORACLE_PACKAGES)
+
+$(BUILD)/CMakeCache.txt:
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+
+build: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS)
+
+demo: build
+	@echo "== gcx check examples/nct/O1001.nct"
+	$(BUILD)/gcx check examples/nct/O1001.nct
+	@echo "== gcx fmt examples/nct/O1001.nct"
+	$(BUILD)/gcx fmt examples/nct/O1001.nct
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+bench: build
+	bench/run.sh $(BUILD)
+
+format:
+	clang-format -i $$(git ls-files '*.cpp' '*.h')
+
+clean:
+	rm -rf $(BUILD)

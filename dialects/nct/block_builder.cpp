@@ -1,0 +1,137 @@
+#include "dialects/nct/block_builder.h"
+
+#include <charconv>
+#include <fmt/format.h>
+
+#include "diag/codes.h"
+
+namespace gcx::nct {
+
+namespace {
+constexpr int kMaxSignificantDigits = 15; // nct.md §1.2 rule 2 (000:2713)
+
+int significantDigits(std::string_view digits) {
+  int n = 0;
+  bool leading = true;
+  for (char c : digits) {
+    if (c == '.') continue;
+    if (leading && c == '0') continue;
+    leading = false;
+    ++n;
+  }
+  // trailing zeros after the point are not significant either
+  if (digits.find('.') != std::string_view::npos) {
+    for (auto it = digits.rbegin(); it != digits.rend() && (*it == '0' || *it == '.'); ++it)
+      if (*it == '0' && n > 0) --n;
+  }
+  return n;
+}
+} // namespace
+
+bool wholeNumber(std::string_view digits, std::int64_t& value) {
+  auto dot = digits.find('.');
+  std::string_view intPart = digits.substr(0, dot);
+  if (dot != std::string_view::npos)
+    for (char c : digits.substr(dot + 1))
+      if (c != '0') return false;
+  value = 0;
+  for (char c : intPart) {
+    if (value > 999999999999LL) return false;
+    value = value * 10 + (c - '0');
+  }
+  return true;
+}
+
+BlockBuilder::BlockBuilder(const front::RawBlock& raw, ir::Block& out, diag::Engine& diags)
+    : raw_(raw), out_(out), diags_(diags) {
+  out_ = ir::Block{};
+  out_.range = SourceRange{raw.begin, static_cast<std::uint32_t>(raw.text.size())};
+  out_.lastLine = raw.lastLine();
+}
+
+double BlockBuilder::number(std::string_view digits, std::size_t pos) {
+  if (significantDigits(digits) > kMaxSignificantDigits) {
+    diags_.error(diag::code::TooManyDigits, range(pos, digits.size()),
+                 fmt::format("number '{}' has more than {} significant digits", digits,
+                             kMaxSignificantDigits));
+    ok_ = false;
+  }
+  double v = 0;
+  const char* b = digits.data();
+  const char* e = b + digits.size();
+  std::string tmp;
+  if (!digits.empty() && digits.front() == '.') { // from_chars wants a leading digit
+    tmp = "0";
+    tmp.append(digits);
+    b = tmp.data();
+    e = b + tmp.size();
+  }
+  std::from_chars(b, e, v);
+  return v;
+}
+
+void BlockBuilder::skip(std::size_t pos, std::size_t len, std::string_view digits) {
+  std::int64_t level = 1;
+  if (!digits.empty()) {
+    if (!wholeNumber(digits, level) || level < 1 || level > 9) {
+      diags_.error(diag::code::DataOutOfRange, range(pos, len),
+                   fmt::format("block skip level '{}' is out of range 1-9", digits));
+      ok_ = false;
+      return;
+    }
+    if (level == 9)
+      diags_.warning(diag::code::SkipLevelNine, range(pos, len),
+                     "block skip level 9: the manual's chapter 14 allows only 1-8 (nct.md Q3)");
+  }
+  out_.skipLevel = static_cast<int>(level);
+}
+
+void BlockBuilder::sequence(std::size_t pos, std::size_t len, std::string_view digits) {
+  std::int64_t n = 0;
+  if (!wholeNumber(digits, n)) {
+    diags_.error(diag::code::SyntaxError, range(pos, len),
+                 fmt::format("block number 'N{}' must be a whole number", digits));
+    ok_ = false;
+    return;
+  }
+  out_.sequence = n;
+  out_.sequenceRange = range(pos, len);
+}
+
+void BlockBuilder::programStart(std::size_t pos, std::string_view number) {
+  out_.kind = ir::BlockKind::ProgramStart;
+  if (number.empty()) return;
+  std::int64_t n = 0;
+  if (!wholeNumber(number, n)) {
+    diags_.error(diag::code::SyntaxError, range(pos, 1), "program number must be a whole number");
+    ok_ = false;
+    return;
+  }
+  out_.programNumber = n;
+}
+
+ir::Word& BlockBuilder::newWord(std::string_view address, std::size_t pos, std::size_t len) {
+  ir::Word& w = out_.words.emplace_back();
+  w.address.assign(address);
+  w.range = range(pos, len);
+  return w;
+}
+
+void BlockBuilder::literalWord(std::string_view address, std::size_t pos, std::size_t len,
+                               bool incremental, bool negative, std::string_view digits) {
+  ir::Word& w = newWord(address, pos, len);
+  w.incremental = incremental;
+  w.kind = ir::ValueKind::Number;
+  const std::size_t numPos = pos + len - digits.size();
+  double v = number(digits, numPos);
+  w.number = negative ? -v : v;
+}
+
+void BlockBuilder::comment(std::size_t pos, std::size_t len) {
+  ir::Comment c;
+  c.text = raw_.text.substr(pos + 1, len >= 2 ? len - 2 : 0);
+  c.range = range(pos, len);
+  out_.comments.push_back(std::move(c));
+}
+
+} // namespace gcx::nct

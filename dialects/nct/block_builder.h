@@ -1,0 +1,49 @@
+// Builds one ir::Block from the pieces a parser recognises. Both parse paths (the fast path for
+// plain word-address blocks and the ANTLR path) go through it, so they cannot disagree on how
+// a piece becomes IR.
+#pragma once
+#include <string_view>
+
+#include "diag/diagnostic.h"
+#include "front/raw_block.h"
+#include "ir/block.h"
+
+namespace gcx::nct {
+
+class BlockBuilder {
+public:
+  BlockBuilder(const front::RawBlock& raw, ir::Block& out, diag::Engine& diags);
+
+  /// `/` or `/n` at pos; digits empty for a bare `/`.
+  void skip(std::size_t pos, std::size_t len, std::string_view digits);
+  /// The first N of the block.
+  void sequence(std::size_t pos, std::size_t len, std::string_view digits);
+  /// `%` or `%O0001`.
+  void programStart(std::size_t pos, std::string_view number);
+  /// An address with a literal number: `X-40`, `XI-40`, `G84.2`.
+  void literalWord(std::string_view address, std::size_t pos, std::size_t len, bool incremental,
+                   bool negative, std::string_view digits);
+  /// A comment whose '(' is at pos and ')' at pos+len-1.
+  void comment(std::size_t pos, std::size_t len);
+
+  /// A number token as a double; reports digits beyond the profile limit.
+  double number(std::string_view digits, std::size_t pos);
+  ir::Word& newWord(std::string_view address, std::size_t pos, std::size_t len);
+  SourceRange range(std::size_t pos, std::size_t len) const { return raw_.rangeAt(pos, len); }
+  const front::RawBlock& raw() const { return raw_; }
+  ir::Block& block() { return out_; }
+  diag::Engine& diags() { return diags_; }
+  bool ok() const { return ok_; }
+  void fail() { ok_ = false; }
+
+private:
+  const front::RawBlock& raw_;
+  ir::Block& out_;
+  diag::Engine& diags_;
+  bool ok_ = true;
+};
+
+/// Whole units of a number token such as "0012" or "12.": false if it has a fraction.
+bool wholeNumber(std::string_view digits, std::int64_t& value);
+
+} // namespace gcx::nct

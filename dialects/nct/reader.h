@@ -1,0 +1,43 @@
+// The NCT front end: bytes in, IR blocks out, one block at a time (streaming).
+#pragma once
+#include <istream>
+#include <memory>
+
+#include "dialect/profile.h"
+#include "dialects/nct/tree_builder.h"
+#include "front/block_reader.h"
+
+namespace gcx::nct {
+
+struct ReaderStats {
+  std::size_t blocks = 0;
+  std::size_t fastPath = 0; // blocks parsed without the grammar
+  std::size_t grammar = 0;
+  std::size_t failed = 0;
+};
+
+class Reader {
+public:
+  Reader(std::istream& in, FileId file, diag::Engine& diags, front::ReaderLimits limits = {});
+
+  /// The next well-formed block; blocks with errors are reported and skipped. False at the end.
+  bool next(ir::Block& out);
+  const ReaderStats& stats() const { return stats_; }
+  bool sawInput() const { return bytes_.sawAnyByte(); }
+  /// Disable the fast path (tests compare both paths).
+  void setFastPath(bool on) { fastPath_ = on; }
+
+private:
+  void updateDataMode(ir::Block& b);
+
+  front::BlockReader bytes_;
+  diag::Engine& diags_;
+  const Profile& profile_;
+  GrammarParser grammar_;
+  front::RawBlock raw_;
+  ReaderStats stats_;
+  bool fastPath_ = true;
+  bool dataMode_ = false;
+};
+
+} // namespace gcx::nct

@@ -1,0 +1,668 @@
+#include "dialects/nct/tree_builder.h"
+
+#include <fmt/format.h>
+
+#include "NCTLexer.h"
+#include "NCTParser.h"
+#include "antlr4-runtime.h"
+#include "diag/codes.h"
+
+namespace gcx::nct {
+
+using P = nctgen::NCTParser;
+using antlr4::Token;
+
+namespace {
+
+struct FirstError {
+  bool set = false;
+  std::size_t pos = 0;
+  std::size_t len = 1;
+  bool lexer = false;
+  Token* token = nullptr;
+};
+
+class Collector : public antlr4::BaseErrorListener {
+public:
+  FirstError* err = nullptr;
+  antlr4::Lexer* lexer = nullptr;
+
+  void syntaxError(antlr4::Recognizer*, Token* offending, std::size_t, std::size_t,
+                   const std::string&, std::exception_ptr) override {
+    if (err->set) return;
+    err->set = true;
+    if (offending) {
+      err->token = offending;
+      err->pos = offending->getStartIndex();
+      err->len = offending->getType() == Token::EOF
+                     ? 1
+                     : offending->getStopIndex() - offending->getStartIndex() + 1;
+    } else {
+      err->lexer = true;
+      err->pos = lexer->tokenStartCharIndex;
+    }
+  }
+};
+
+// Cancels the first (fast, SLL) attempt at the first error; the second attempt runs full LL.
+class Cancel : public antlr4::BaseErrorListener {
+public:
+  bool hit = false;
+  void syntaxError(antlr4::Recognizer*, Token*, std::size_t, std::size_t, const std::string&,
+                   std::exception_ptr) override {
+    hit = true;
+  }
+};
+
+ir::Op opOf(std::size_t tokenType) {
+  switch (tokenType) {
+  case P::PLUS:
+    return ir::Op::Add;
+  case P::MINUS:
+    return ir::Op::Sub;
+  case P::OR:
+    return ir::Op::Or;
+  case P::XOR:
+    return ir::Op::Xor;
+  case P::STAR:
+    return ir::Op::Mul;
+  case P::SLASH:
+    return ir::Op::Div;
+  case P::AND:
+    return ir::Op::And;
+  case P::MOD:
+    return ir::Op::Mod;
+  }
+  return ir::Op::Add;
+}
+
+ir::Func funcOf(std::size_t tokenType) {
+  switch (tokenType) {
+  case P::SIN:
+    return ir::Func::Sin;
+  case P::COS:
+    return ir::Func::Cos;
+  case P::TAN:
+    return ir::Func::Tan;
+  case P::ASIN:
+    return ir::Func::Asin;
+  case P::ACOS:
+    return ir::Func::Acos;
+  case P::ATAN:
+    return ir::Func::Atan;
+  case P::SQRT:
+    return ir::Func::Sqrt;
+  case P::EXP:
+    return ir::Func::Exp;
+  case P::LN:
+    return ir::Func::Ln;
+  case P::ABS:
+    return ir::Func::Abs;
+  case P::FIX:
+    return ir::Func::Fix;
+  }
+  return ir::Func::Fup;
+}
+
+ir::RelOp relOf(std::size_t tokenType) {
+  switch (tokenType) {
+  case P::EQ:
+    return ir::RelOp::Eq;
+  case P::NE:
+    return ir::RelOp::Ne;
+  case P::GT:
+    return ir::RelOp::Gt;
+  case P::GE:
+    return ir::RelOp::Ge;
+  case P::LT:
+    return ir::RelOp::Lt;
+  }
+  return ir::RelOp::Le;
+}
+
+bool isMessageVariable(const ir::Expr& target) {
+  if (target.kind == ir::ExprKind::Variable)
+    return target.number == 3000 || target.number == 3006 || target.number == 3106 ||
+           target.number == 3107;
+  if (target.kind == ir::ExprKind::Named)
+    return target.name == "ALM" || target.name == "MSGSTP" || target.name == "MSG" ||
+           target.name == "MSGBOX";
+  return false;
+}
+
+// Turns a parse tree into IR through the shared BlockBuilder.
+class TreeToIr {
+public:
+  explicit TreeToIr(BlockBuilder& b) : b_(b) {}
+
+  void block(P::BlockContext* ctx) {
+    if (auto* ps = ctx->programStart()) {
+      b_.programStart(ps->getStart()->getStartIndex(), ps->NUMBER() ? ps->NUMBER()->getText() : "");
+      return;
+    }
+    if (auto* sk = ctx->blockSkip())
+      b_.skip(start(sk), length(sk), sk->NUMBER() ? sk->NUMBER()->getText() : std::string());
+    if (auto* sq = ctx->sequenceNumber())
+      b_.sequence(start(sq), length(sq), sq->NUMBER()->getText());
+    auto* body = ctx->body();
+    if (auto* st = body->statement()) {
+      statement(st);
+      return;
+    }
+    for (auto* w : body->word())
+      word(w);
+    // `N#1`: a variable where a block number stands (macro B2, 000:11857)
+    if (!ctx->sequenceNumber() && !b_.block().words.empty()) {
+      const ir::Word& first = b_.block().words.front();
+      if (first.is('N') && first.kind != ir::ValueKind::Number) {
+        b_.diags().error(diag::code::VariableNotAllowed, first.range,
+                         "a block number must be a literal, not a variable or expression");
+        b_.fail();
+      }
+    }
+  }
+
+private:
+  static std::size_t start(antlr4::ParserRuleContext* c) { return c->getStart()->getStartIndex(); }
+  static std::size_t length(antlr4::ParserRuleContext* c) {
+    return c->getStop()->getStopIndex() + 1 - c->getStart()->getStartIndex();
+  }
+  static std::size_t start(antlr4::tree::TerminalNode* t) {
+    return t->getSymbol()->getStartIndex();
+  }
+  SourceRange range(antlr4::ParserRuleContext* c) const { return b_.range(start(c), length(c)); }
+
+  void word(P::WordContext* w) {
+    if (auto* aw = dynamic_cast<P::AddressWordContext*>(w)) {
+      value(aw->address()->getText(), start(aw), length(aw), aw->I() != nullptr, aw->value());
+    } else if (auto* cw = dynamic_cast<P::CommaWordContext*>(w)) {
+      value(std::string(",").append(cw->address()->getText()), start(cw), length(cw), false,
+            cw->value());
+    } else if (auto* xw = dynamic_cast<P::AxisNumberWordContext*>(w)) {
+      value("AX", start(xw), length(xw), xw->I() != nullptr, xw->value());
+      b_.block().words.back().axisIndex.push_back(expr(xw->expr()));
+    } else if (auto* pw = dynamic_cast<P::PathWordContext*>(w)) {
+      ir::Word& word = b_.newWord(ir::kPathAddress, start(pw), length(pw));
+      word.kind = ir::ValueKind::Path;
+      const std::size_t p = start(pw); // the path keeps its case
+      word.path = b_.raw().text.substr(p + 1, pw->PATH()->getText().size() - 2);
+    }
+  }
+
+  void value(const std::string& address, std::size_t pos, std::size_t len, bool incremental,
+             P::ValueContext* v) {
+    if (auto* nv = dynamic_cast<P::NumberValueContext*>(v)) {
+      const bool negative = nv->sign() && nv->sign()->MINUS();
+      b_.literalWord(address, pos, len, incremental, negative, nv->NUMBER()->getText());
+      return;
+    }
+    ir::Word& w = b_.newWord(address, pos, len);
+    w.incremental = incremental;
+    w.kind = ir::ValueKind::Expression;
+    P::SignContext* sign = nullptr;
+    ir::Expr e;
+    if (auto* vv = dynamic_cast<P::VariableValueContext*>(v)) {
+      sign = vv->sign();
+      e = variable(vv->variable());
+    } else if (auto* bv = dynamic_cast<P::BracketValueContext*>(v)) {
+      sign = bv->sign();
+      e.kind = ir::ExprKind::Bracket;
+      e.range = b_.range(start(bv->LBRACK()),
+                         bv->RBRACK()->getSymbol()->getStopIndex() + 1 - start(bv->LBRACK()));
+      e.args.push_back(expr(bv->expr()));
+    }
+    if (sign) {
+      ir::Expr u;
+      u.kind = ir::ExprKind::Unary;
+      u.op = sign->MINUS() ? ir::Op::Neg : ir::Op::Plus;
+      u.range = range(v);
+      u.args.push_back(std::move(e));
+      e = std::move(u);
+    }
+    w.expr = std::move(e);
+  }
+
+  ir::Expr variable(P::VariableContext* v) {
+    ir::Expr e;
+    e.range = range(v);
+    if (auto* nv = dynamic_cast<P::NumberedVariableContext*>(v)) {
+      std::int64_t n = 0;
+      if (!wholeNumber(nv->NUMBER()->getText(), n)) {
+        b_.diags().error(
+            diag::code::SyntaxError, e.range,
+            fmt::format("variable number '{}' must be a whole number", nv->NUMBER()->getText()));
+        b_.fail();
+      }
+      e.kind = ir::ExprKind::Variable;
+      e.number = static_cast<double>(n);
+    } else if (auto* iv = dynamic_cast<P::IndirectVariableContext*>(v)) {
+      e.kind = ir::ExprKind::Indirect;
+      e.args.push_back(expr(iv->expr()));
+    } else if (auto* sv = dynamic_cast<P::NamedVariableContext*>(v)) {
+      e.kind = ir::ExprKind::Named;
+      e.name = sv->SYSTEM_NAME()->getText().substr(2);
+      if (sv->expr()) e.args.push_back(expr(sv->expr()));
+    }
+    return e;
+  }
+
+  ir::Expr binary(ir::Op op, ir::Expr lhs, ir::Expr rhs) {
+    ir::Expr e;
+    e.kind = ir::ExprKind::Binary;
+    e.op = op;
+    e.range = lhs.range;
+    const auto end = rhs.range.begin.offset + rhs.range.length;
+    e.range.length = static_cast<std::uint32_t>(end - lhs.range.begin.offset);
+    e.args.push_back(std::move(lhs));
+    e.args.push_back(std::move(rhs));
+    return e;
+  }
+
+  ir::Expr expr(P::ExprContext* c) {
+    auto terms = c->term();
+    auto ops = c->addOp();
+    ir::Expr e = term(terms[0]);
+    for (std::size_t i = 0; i < ops.size(); ++i)
+      e = binary(opOf(ops[i]->getStart()->getType()), std::move(e), term(terms[i + 1]));
+    return e;
+  }
+
+  ir::Expr term(P::TermContext* c) {
+    auto us = c->unary();
+    auto ops = c->mulOp();
+    ir::Expr e = unary(us[0]);
+    for (std::size_t i = 0; i < ops.size(); ++i) {
+      ir::Expr rhs = unary(us[i + 1]);
+      const ir::Op op = opOf(ops[i]->getStart()->getType());
+      // ATAN[a]/[b] is ATAN[a] divided by b in NCT, not Fanuc's two-argument arctangent
+      if (op == ir::Op::Div && e.kind == ir::ExprKind::Call && e.func == ir::Func::Atan &&
+          rhs.kind == ir::ExprKind::Bracket)
+        b_.diags().warning(diag::code::AtanTwoArgs, e.range,
+                           "ATAN[a]/[b] divides ATAN[a] by b: NCT has no two-argument ATAN "
+                           "(nct-macro.md §3.1)");
+      e = binary(op, std::move(e), std::move(rhs));
+    }
+    return e;
+  }
+
+  ir::Expr unary(P::UnaryContext* c) {
+    if (c->primary()) return primary(c->primary());
+    ir::Expr e;
+    e.kind = ir::ExprKind::Unary;
+    e.op = c->MINUS() ? ir::Op::Neg : ir::Op::Plus;
+    e.range = range(c);
+    e.args.push_back(unary(c->unary()));
+    return e;
+  }
+
+  ir::Expr primary(P::PrimaryContext* c) {
+    ir::Expr e;
+    e.range = range(c);
+    if (auto* n = dynamic_cast<P::NumberPrimaryContext*>(c)) {
+      e.kind = ir::ExprKind::Number;
+      e.number = b_.number(n->NUMBER()->getText(), start(n));
+    } else if (auto* v = dynamic_cast<P::VariablePrimaryContext*>(c)) {
+      e = variable(v->variable());
+    } else if (auto* br = dynamic_cast<P::BracketPrimaryContext*>(c)) {
+      e.kind = ir::ExprKind::Bracket;
+      e.args.push_back(expr(br->expr()));
+    } else if (auto* call = dynamic_cast<P::CallPrimaryContext*>(c)) {
+      e.kind = ir::ExprKind::Call;
+      e.func = funcOf(call->function()->getStart()->getType());
+      e.args.push_back(primary(call->primary()));
+    } else if (auto* nt = dynamic_cast<P::NotPrimaryContext*>(c)) {
+      e.kind = ir::ExprKind::Unary;
+      e.op = ir::Op::Not;
+      e.args.push_back(primary(nt->primary()));
+    } else if (auto* ax = dynamic_cast<P::AxnumPrimaryContext*>(c)) {
+      e.kind = ir::ExprKind::AxisNumber;
+      e.name = ax->address()->getText();
+    } else if (auto* prm = dynamic_cast<P::PrmPrimaryContext*>(c)) {
+      e.kind = ir::ExprKind::Parameter;
+      auto args = prm->expr();
+      e.prmHasBit = prm->COMMA() != nullptr;
+      e.prmHasIndex = prm->SLASH() != nullptr;
+      for (auto* a : args)
+        e.args.push_back(expr(a));
+      if (!prmAllowed_) {
+        b_.diags().error(diag::code::ForbiddenAddress, e.range,
+                         "PRM may only stand as the whole right side of an assignment "
+                         "(nct-macro.md §9.2)");
+        b_.fail();
+      }
+    }
+    return e;
+  }
+
+  ir::Stmt& newStmt(P::StatementContext* c, ir::StmtKind kind) {
+    b_.block().stmt.emplace();
+    ir::Stmt& s = *b_.block().stmt;
+    s.kind = kind;
+    s.range = range(c);
+    return s;
+  }
+
+  void assignment(ir::Stmt& s, P::AssignmentContext* a) {
+    s.target = variable(a->variable());
+    auto* rhs = a->expr();
+    // PRM[...] is allowed only as the whole right side
+    auto* t = rhs->term().size() == 1 && rhs->addOp().empty() ? rhs->term(0) : nullptr;
+    auto* u = t && t->unary().size() == 1 ? t->unary(0) : nullptr;
+    prmAllowed_ = u && u->primary() && dynamic_cast<P::PrmPrimaryContext*>(u->primary());
+    s.value = expr(rhs);
+    prmAllowed_ = false;
+  }
+
+  void condition(ir::Stmt& s, P::ConditionContext* c) {
+    ir::Condition cond;
+    cond.lhs = expr(c->expr(0));
+    cond.op = relOf(c->relation()->getStart()->getType());
+    cond.rhs = expr(c->expr(1));
+    s.cond = std::move(cond);
+  }
+
+  int loopId(antlr4::tree::TerminalNode* number) {
+    std::int64_t n = 0;
+    if (!wholeNumber(number->getText(), n)) {
+      b_.diags().error(diag::code::SyntaxError, b_.range(start(number), number->getText().size()),
+                       "a loop number must be a whole number");
+      b_.fail();
+    }
+    return static_cast<int>(std::min<std::int64_t>(n, 1000000));
+  }
+
+  std::optional<double> optionalNumber(antlr4::tree::TerminalNode* t) {
+    if (!t) return std::nullopt;
+    return b_.number(t->getText(), start(t));
+  }
+
+  void statement(P::StatementContext* st) {
+    if (auto* a = dynamic_cast<P::AssignStatementContext*>(st)) {
+      ir::Stmt& s = newStmt(st, ir::StmtKind::Assign);
+      assignment(s, a->assignment());
+      attachMessage(s);
+    } else if (auto* g = dynamic_cast<P::GotoStatementContext*>(st)) {
+      newStmt(st, ir::StmtKind::Goto).value = expr(g->expr());
+    } else if (auto* ig = dynamic_cast<P::IfGotoStatementContext*>(st)) {
+      ir::Stmt& s = newStmt(st, ir::StmtKind::IfGoto);
+      condition(s, ig->condition());
+      s.value = expr(ig->expr());
+    } else if (auto* it = dynamic_cast<P::IfThenStatementContext*>(st)) {
+      ir::Stmt& s = newStmt(st, ir::StmtKind::IfThen);
+      condition(s, it->condition());
+      assignment(s, it->assignment());
+      attachMessage(s);
+    } else if (auto* wh = dynamic_cast<P::WhileStatementContext*>(st)) {
+      ir::Stmt& s = newStmt(st, ir::StmtKind::While);
+      condition(s, wh->condition());
+      s.loopId = loopId(wh->NUMBER());
+    } else if (auto* d = dynamic_cast<P::DoStatementContext*>(st)) {
+      newStmt(st, ir::StmtKind::Do).loopId = loopId(d->NUMBER());
+    } else if (auto* en = dynamic_cast<P::EndStatementContext*>(st)) {
+      newStmt(st, ir::StmtKind::End).loopId = loopId(en->NUMBER());
+    } else if (auto* pr = dynamic_cast<P::PrintStatementContext*>(st)) {
+      ir::Stmt& s = newStmt(st, ir::StmtKind::Print);
+      printItems(s, pr->PRINT_COMMAND());
+    } else if (auto* po = dynamic_cast<P::PopenStatementContext*>(st)) {
+      newStmt(st, ir::StmtKind::Popen).device = optionalNumber(po->NUMBER());
+    } else if (auto* pc = dynamic_cast<P::PclosStatementContext*>(st)) {
+      newStmt(st, ir::StmtKind::Pclos).device = optionalNumber(pc->NUMBER());
+    } else if (auto* fo = dynamic_cast<P::FopenStatementContext*>(st)) {
+      ir::Stmt& s = newStmt(st, ir::StmtKind::Fopen);
+      auto nums = fo->NUMBER();
+      s.device = optionalNumber(nums[0]);
+      if (nums.size() > 1) s.program = optionalNumber(nums[1]);
+      if (fo->PATH()) {
+        const std::size_t p = start(fo->PATH());
+        s.path = b_.raw().text.substr(p + 1, fo->PATH()->getText().size() - 2);
+      }
+    } else if (dynamic_cast<P::FclosStatementContext*>(st)) {
+      newStmt(st, ir::StmtKind::Fclos);
+    }
+  }
+
+  // `#3000=1(TOOL BROKEN)`: the comment is the message (nct-macro.md L4)
+  void attachMessage(ir::Stmt& s) {
+    if (isMessageVariable(s.target) && !b_.block().comments.empty())
+      s.message = b_.block().comments.front().text;
+  }
+
+  // DPRNT[X#100[53] Y#101[53]]: text, and variables with a format of integer and fraction digits
+  void printItems(ir::Stmt& s, antlr4::tree::TerminalNode* node) {
+    const std::string text = node->getText();
+    s.binaryPrint = text[0] == 'B';
+    const std::size_t open = text.find('[');
+    const std::string inner = text.substr(open + 1, text.size() - open - 2);
+    std::string pending;
+    auto flush = [&] {
+      if (pending.empty()) return;
+      ir::PrintItem item;
+      item.text = std::move(pending);
+      s.items.push_back(std::move(item));
+      pending.clear();
+    };
+    for (std::size_t i = 0; i < inner.size(); ++i) {
+      if (inner[i] != '#') {
+        pending.push_back(inner[i]);
+        continue;
+      }
+      flush();
+      ir::PrintItem item;
+      item.isVariable = true;
+      std::size_t j = i + 1;
+      while (j < inner.size() && std::isdigit(static_cast<unsigned char>(inner[j])))
+        item.variable = item.variable * 10 + (inner[j++] - '0');
+      if (j < inner.size() && inner[j] == '[') {
+        std::size_t close = inner.find(']', j);
+        std::string fmtDigits = inner.substr(j + 1, close - j - 1);
+        if (!fmtDigits.empty()) {
+          item.intDigits = std::atoi(fmtDigits.substr(0, fmtDigits.size() - 1).c_str());
+          item.fracDigits = fmtDigits.back() - '0';
+          if (fmtDigits.size() == 1) item.intDigits = item.fracDigits, item.fracDigits = 0;
+        }
+        j = close + 1;
+      }
+      s.items.push_back(std::move(item));
+      i = j - 1;
+    }
+    flush();
+  }
+
+  BlockBuilder& b_;
+  bool prmAllowed_ = false;
+};
+
+// Brackets are checked before the grammar so the two alarms of nct-macro.md §3.4 come out exactly:
+// a ']' without '[' is 2064, a '[' never closed is 2121.
+bool checkBrackets(const front::RawBlock& raw, diag::Engine& diags) {
+  const std::string& s = raw.lexText;
+  std::vector<std::size_t> open;
+  bool comment = false;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    if (comment) {
+      comment = c != ')';
+      continue;
+    }
+    if (c == '(')
+      comment = true;
+    else if (c == '<') { // a file path may hold anything
+      auto close = s.find('>', i);
+      if (close != std::string::npos) i = close;
+    } else if (c == '[')
+      open.push_back(i);
+    else if (c == ']') {
+      if (open.empty()) {
+        diags.error(diag::code::SyntaxError, raw.rangeAt(i, 1), "']' without a matching '['");
+        return false;
+      }
+      open.pop_back();
+    }
+  }
+  if (!open.empty()) {
+    diags.error(diag::code::RightBracketNotFound, raw.rangeAt(open.front(), 1),
+                "'[' is not closed by ']'");
+    return false;
+  }
+  return true;
+}
+
+} // namespace
+
+struct GrammarParser::Impl {
+  antlr4::ANTLRInputStream input;
+  nctgen::NCTLexer lexer{&input};
+  antlr4::CommonTokenStream tokens{&lexer};
+  nctgen::NCTParser parser{&tokens};
+  Collector collector;
+  Cancel cancel;
+  FirstError first;
+
+  Impl() {
+    lexer.removeErrorListeners();
+    parser.removeErrorListeners();
+    collector.err = &first;
+    collector.lexer = &lexer;
+  }
+
+  void reset(const std::string& text) {
+    input.load(text);
+    lexer.setInputStream(&input);
+    tokens.setTokenSource(&lexer);
+    parser.setTokenStream(&tokens);
+  }
+
+  void report(const front::RawBlock& raw, diag::Engine& diags);
+};
+
+GrammarParser::GrammarParser() : impl_(std::make_unique<Impl>()) {}
+GrammarParser::~GrammarParser() = default;
+
+void GrammarParser::Impl::report(const front::RawBlock& raw, diag::Engine& diags) {
+  const std::string& s = raw.lexText;
+  if (first.lexer) {
+    diags.error(diag::code::SyntaxError, raw.rangeAt(first.pos, 1),
+                fmt::format("unexpected character '{}'", raw.text.substr(first.pos, 1)));
+    return;
+  }
+  // Explain the common mistakes in the manual's terms before falling back to "unexpected".
+  std::vector<Token*> toks;
+  for (Token* t : tokens.getTokens())
+    if (t->getChannel() == Token::DEFAULT_CHANNEL) toks.push_back(t);
+  auto at = [&](Token* t) {
+    return raw.rangeAt(t->getStartIndex(), t->getStopIndex() + 1 - t->getStartIndex());
+  };
+  for (std::size_t k = 0; k < toks.size(); ++k) {
+    if (toks[k]->getType() == P::WHILE) {
+      bool hasDo = false, hasAssign = false;
+      for (std::size_t m = k; m < toks.size(); ++m) {
+        hasDo |= toks[m]->getType() == P::DO;
+        if (toks[m]->getType() == P::ASSIGN && !hasAssign) {
+          hasAssign = true;
+          diags.error(diag::code::RightBracketNotFound, at(toks[m]),
+                      "wrong terminator '=' after WHILE[...] (expected DOm)");
+          return;
+        }
+      }
+      if (!hasDo) {
+        diags.error(diag::code::WhileWithoutDo, at(toks[k]), "WHILE without DO in the same block");
+        return;
+      }
+    }
+  }
+  Token* off = first.token;
+  for (std::size_t k = 0; off && k < toks.size(); ++k) {
+    if (toks[k] != off || k == 0) continue;
+    if (toks[k - 1]->getType() == P::HASH) {
+      diags.error(diag::code::SyntaxError, at(toks[k - 1]),
+                  "'#' must be followed by a variable number, '[expression]' or '_NAME'");
+      return;
+    }
+  }
+  if (off && off->getType() == P::HASH && !toks.empty() && toks.front() != off) {
+    // `##120`
+    diags.error(diag::code::SyntaxError, at(off),
+                "'#' must be followed by a variable number; write #[#n] for indirection");
+    return;
+  }
+  if (!off || off->getType() == Token::EOF) {
+    // the block ended too early: name what is missing
+    if (!toks.empty() && toks.size() >= 2) {
+      Token* last = toks[toks.size() - 2]; // before EOF
+      const auto type = last->getType();
+      if (type >= P::A && type <= P::Z) {
+        diags.error(diag::code::MissingData, at(last),
+                    fmt::format("address '{}' has no value", last->getText()));
+        return;
+      }
+    }
+    const std::size_t end = s.empty() ? 0 : s.size() - 1;
+    diags.error(diag::code::SyntaxError, raw.rangeAt(end, 1), "unexpected end of block");
+    return;
+  }
+  // an address directly followed by another address: the first one has no value
+  for (std::size_t k = 1; k < toks.size(); ++k) {
+    if (toks[k] != off) continue;
+    const auto prev = toks[k - 1]->getType();
+    if (prev >= P::A && prev <= P::Z && off->getType() >= P::A && off->getType() <= P::Z) {
+      diags.error(diag::code::MissingData, at(toks[k - 1]),
+                  fmt::format("address '{}' has no value", toks[k - 1]->getText()));
+      return;
+    }
+  }
+  diags.error(diag::code::SyntaxError, at(off),
+              fmt::format("unexpected '{}'",
+                          raw.text.substr(off->getStartIndex(),
+                                          off->getStopIndex() + 1 - off->getStartIndex())));
+}
+
+bool GrammarParser::parse(const front::RawBlock& raw, ir::Block& out, diag::Engine& diags) {
+  if (!checkBrackets(raw, diags)) return false;
+  Impl& m = *impl_;
+  m.first = FirstError{};
+  m.reset(raw.lexText);
+
+  // 1st attempt: SLL prediction, bail at the first error (the fast, common case).
+  m.lexer.removeErrorListeners();
+  m.lexer.addErrorListener(&m.collector);
+  m.parser.removeErrorListeners();
+  m.cancel.hit = false;
+  m.parser.addErrorListener(&m.cancel);
+  m.parser.getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(
+      antlr4::atn::PredictionMode::SLL);
+  m.parser.setErrorHandler(std::make_shared<antlr4::BailErrorStrategy>());
+  P::BlockContext* tree = nullptr;
+  try {
+    tree = m.parser.block();
+  } catch (const antlr4::ParseCancellationException&) {
+    tree = nullptr;
+  }
+  if (m.first.set) { // the lexer already failed: no need for a second parse
+    m.report(raw, diags);
+    return false;
+  }
+  if (!tree || m.cancel.hit) {
+    // 2nd attempt: full LL with error reporting, for a correct verdict and a located error.
+    m.reset(raw.lexText);
+    m.parser.removeErrorListeners();
+    m.parser.addErrorListener(&m.collector);
+    m.parser.getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(
+        antlr4::atn::PredictionMode::LL);
+    m.parser.setErrorHandler(std::make_shared<antlr4::DefaultErrorStrategy>());
+    tree = m.parser.block();
+    if (m.first.set) {
+      m.report(raw, diags);
+      return false;
+    }
+  }
+
+  BlockBuilder b(raw, out, diags);
+  // comments live on the hidden channel; collect them in source order
+  for (Token* t : m.tokens.getTokens())
+    if (t->getType() == P::COMMENT)
+      b.comment(t->getStartIndex(), t->getStopIndex() + 1 - t->getStartIndex());
+  TreeToIr(b).block(tree);
+  return b.ok();
+}
+
+} // namespace gcx::nct

@@ -1,0 +1,55 @@
+// The table of dialects gcx knows. Adding a dialect = adding a row here and its folder.
+#include <algorithm>
+#include <filesystem>
+
+#include "dialect/dialect.h"
+#include "dialects/nct/printer.h"
+#include "dialects/nct/profile.h"
+#include "dialects/nct/reader.h"
+
+namespace gcx {
+
+namespace {
+
+class NctSource : public BlockSource {
+public:
+  NctSource(std::istream& in, FileId file, diag::Engine& diags) : reader_(in, file, diags) {}
+  bool next(ir::Block& out) override { return reader_.next(out); }
+  bool sawInput() const override { return reader_.sawInput(); }
+
+private:
+  nct::Reader reader_;
+};
+
+} // namespace
+
+const std::vector<Dialect>& dialects() {
+  static const std::vector<Dialect> all = {
+      Dialect{"nct",
+              {".nct"},
+              &nct::profile,
+              [](std::istream& in, FileId f, diag::Engine& d) -> std::unique_ptr<BlockSource> {
+                return std::make_unique<NctSource>(in, f, d);
+              },
+              &nct::printBlock},
+  };
+  return all;
+}
+
+const Dialect* findDialect(const std::string& name) {
+  for (const Dialect& d : dialects())
+    if (d.name == name) return &d;
+  return nullptr;
+}
+
+const Dialect* dialectForPath(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  for (const Dialect& d : dialects())
+    for (const std::string& e : d.extensions)
+      if (e == ext) return &d;
+  return nullptr;
+}
+
+} // namespace gcx

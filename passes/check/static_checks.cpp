@@ -1,0 +1,228 @@
+#include "passes/check/static_checks.h"
+
+#include <array>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "diag/codes.h"
+
+namespace gcx::check {
+
+namespace {
+std::string formatNumber(double v) {
+  if (v == std::floor(v) && std::fabs(v) < 1e15)
+    return fmt::format("{}", static_cast<long long>(v));
+  return fmt::format("{}", v);
+}
+} // namespace
+
+void StaticChecker::block(const ir::Block& b) {
+  if (b.kind == ir::BlockKind::ProgramStart) {
+    // `%` opens (and by Fanuc habit may close) a tape; between blocks it is an error
+    if (blocks_ > 0 && !percentAfterStart_) percentAfterStart_ = b.range;
+    return;
+  }
+  if (percentAfterStart_ && !b.empty()) {
+    diags_.error(diag::code::MisplacedPercent, SourceRange{percentAfterStart_->begin, 1},
+                 "'%' may only open or close the program");
+    percentAfterStart_.reset();
+  }
+  if (b.kind == ir::BlockKind::Data) {
+    dataRecord(b);
+    return;
+  }
+  if (!b.empty()) ++blocks_;
+  if (b.sequence) {
+    if (*b.sequence < 1 || *b.sequence > 99999999)
+      diags_.error(diag::code::DataOutOfRange, b.sequenceRange,
+                   fmt::format("block number N{} is out of range 1-99999999", *b.sequence));
+    labels_.insert(*b.sequence);
+  }
+  if (b.stmt) statement(*b.stmt);
+  words(b);
+}
+
+void StaticChecker::literal(const ir::Word& w, const AddressSpec& spec) {
+  const double v = w.number;
+  if (!spec.decimal && v != std::floor(v)) {
+    diags_.error(diag::code::SyntaxError, w.range,
+                 fmt::format("address {} takes a whole number, not {}", w.address, v));
+    return;
+  }
+  if (v < 0 && !spec.sign) {
+    diags_.error(
+        diag::code::DataOutOfRange, w.range,
+        fmt::format("address {} takes no sign: {}{}", w.address, w.address, formatNumber(v)));
+    return;
+  }
+  if (v < spec.min || v > spec.max)
+    diags_.error(diag::code::DataOutOfRange, w.range,
+                 fmt::format("{}{} is out of range: {} takes {}-{}", w.address, formatNumber(v),
+                             w.address, formatNumber(spec.min), formatNumber(spec.max)));
+}
+
+void StaticChecker::words(const ir::Block& b) {
+  bool callBlock = false;
+  for (const ir::Word& w : b.words)
+    if (w.is('G') && w.isLiteral())
+      if (auto t = gcodeTenths(w.number))
+        for (int c : profile_.macroCallGCodes10)
+          callBlock |= *t == c;
+
+  std::array<int, 64> groupSeen{}; // modal groups used in this block
+  int gCount = 0, mCount = 0, exclusiveM = 0;
+  std::vector<std::pair<std::string_view, int>> counts;
+  auto countOf = [&](std::string_view a) -> int& {
+    for (auto& [addr, n] : counts)
+      if (addr == a) return n;
+    counts.emplace_back(a, 0);
+    return counts.back().second;
+  };
+
+  for (const ir::Word& w : b.words) {
+    const AddressSpec* spec = profile_.address(w.address);
+    if (!spec) {
+      diags_.error(diag::code::ForbiddenAddress, w.range,
+                   fmt::format("unknown address '{}'", w.address));
+      continue;
+    }
+    if (w.incremental && !spec->incremental) {
+      diags_.error(callBlock ? diag::code::SyntaxError : diag::code::IncrementalNotAllowed, w.range,
+                   fmt::format("the incremental operator I is not allowed after {}", w.address));
+    }
+    if (w.isLiteral()) literal(w, *spec);
+    int& n = countOf(w.address);
+    ++n;
+    if (w.is('G')) {
+      ++gCount;
+      if (callBlock && gCount > 1) {
+        diags_.error(diag::code::ForbiddenAddress, w.range,
+                     "a second G code in a macro call block (nct-macro.md §1.4 K4)");
+        continue;
+      }
+      if (!w.isLiteral()) continue;
+      const GCodeSpec* g = profile_.gcode(w.number);
+      if (!g) {
+        diags_.error(diag::code::UnknownGCode, w.range,
+                     fmt::format("unknown G code G{}", formatNumber(w.number)));
+        continue;
+      }
+      if (g->group != 0 && g->group < static_cast<int>(groupSeen.size())) {
+        if (groupSeen[g->group]++)
+          diags_.error(diag::code::ModalGroupConflict, w.range,
+                       fmt::format("G{} is the second code of modal group {} in this block",
+                                   formatNumber(w.number), g->group));
+      }
+      continue;
+    }
+    if (w.is('M')) {
+      if (callBlock) continue; // in a call block M is argument #13
+      if (++mCount == profile_.maxMCodesPerBlock + 1)
+        diags_.error(diag::code::ConflictingMCodes, w.range,
+                     fmt::format("more than {} M codes in one block", profile_.maxMCodesPerBlock));
+      if (w.isLiteral())
+        for (int m : profile_.exclusiveMCodes)
+          if (w.number == m && ++exclusiveM == 2)
+            diags_.error(diag::code::ConflictingMCodes, w.range,
+                         "conflicting spindle M codes: M3, M4, M5 and M19 exclude each other");
+      continue;
+    }
+    if (n < 2 || spec->repeatable) continue;
+    if (callBlock) {
+      // arguments: I, J, K fill up to ten groups; N once more as #14 (nct-macro.md §5.4)
+      const bool ijk = w.is('I') || w.is('J') || w.is('K');
+      if (ijk && n <= 10) continue;
+      diags_.error(diag::code::ForbiddenAddress, w.range,
+                   w.is('N') ? std::string("a third N in a macro call block")
+                             : fmt::format("argument {} given twice in a macro call", w.address));
+      continue;
+    }
+    diags_.error(diag::code::RepeatedAddress, w.range,
+                 fmt::format("address {} appears twice in one block", w.address));
+  }
+}
+
+void StaticChecker::dataRecord(const ir::Block& b) {
+  // G10 L52 records: N<id> [P<i>] [Q<bit>] R<value> (nct-macro.md §9.1)
+  if (b.empty()) return;
+  if (b.sequence && (*b.sequence < 0 || *b.sequence > 9999))
+    diags_.error(diag::code::DataOutOfRange, b.sequenceRange,
+                 fmt::format("parameter number {} is out of range 0-9999", *b.sequence));
+  bool hasR = false;
+  for (const ir::Word& w : b.words) {
+    if (w.is('R'))
+      hasR = true;
+    else if (w.is('Q') && w.isLiteral() && (w.number < 0 || w.number > 7))
+      diags_.error(diag::code::DataOutOfRange, w.range, "bit number Q must be 0-7");
+    else if (!w.is('P') && !w.is('Q') && !w.is('G') && !w.is('L'))
+      diags_.error(diag::code::ForbiddenAddress, w.range,
+                   fmt::format("address {} is not allowed in a G10 L52 record", w.address));
+  }
+  if (!hasR && b.sequence)
+    diags_.error(diag::code::MissingData, b.range, "parameter record without R value");
+}
+
+void StaticChecker::statement(const ir::Stmt& s) {
+  switch (s.kind) {
+  case ir::StmtKind::While:
+  case ir::StmtKind::Do: {
+    if (s.loopId < 1 || s.loopId > 3) {
+      diags_.error(diag::code::DataOutOfRange, s.range,
+                   fmt::format("DO{} is out of range: loop numbers are 1-3", s.loopId));
+      return;
+    }
+    for (const OpenLoop& l : loops_)
+      if (l.id == s.loopId) {
+        diags_.error(diag::code::LoopPairing, s.range,
+                     fmt::format("DO{} is already open (nct-macro.md §4.4 W6)", s.loopId));
+        return;
+      }
+    loops_.push_back({s.loopId, s.range});
+    return;
+  }
+  case ir::StmtKind::End: {
+    bool open = false;
+    for (const OpenLoop& l : loops_)
+      open |= l.id == s.loopId;
+    if (!open) {
+      diags_.error(diag::code::BlockNotFound, s.range,
+                   fmt::format("END{} without DO{}", s.loopId, s.loopId));
+      return;
+    }
+    if (loops_.back().id != s.loopId) {
+      diags_.error(diag::code::LoopPairing, s.range,
+                   fmt::format("END{} closes DO{} while DO{} inside it is still open (loops must "
+                               "nest)",
+                               s.loopId, s.loopId, loops_.back().id));
+      while (loops_.back().id != s.loopId)
+        loops_.pop_back();
+    }
+    loops_.pop_back();
+    return;
+  }
+  case ir::StmtKind::Goto:
+  case ir::StmtKind::IfGoto:
+    if (s.value.kind == ir::ExprKind::Number)
+      jumps_.push_back({static_cast<std::int64_t>(std::llround(s.value.number)), s.range});
+    return;
+  default:
+    return;
+  }
+}
+
+void StaticChecker::finish(FileId file) {
+  for (const OpenLoop& l : loops_)
+    diags_.error(diag::code::LoopPairing, l.where,
+                 fmt::format("DO{} without END{} in this file", l.id, l.id));
+  loops_.clear();
+  for (const Jump& j : jumps_)
+    if (!labels_.count(j.target))
+      diags_.error(diag::code::BlockNotFound, j.where,
+                   fmt::format("block N{} not found in this file", j.target));
+  jumps_.clear();
+  if (blocks_ == 0)
+    diags_.error(diag::code::EmptyProgram, SourceRange{SourceLoc{file, 1, 1, 0}, 0},
+                 "the program has no blocks");
+}
+
+} // namespace gcx::check

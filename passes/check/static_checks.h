@@ -1,0 +1,47 @@
+// Static checks of a program, block by block as it streams past (gcx check): addresses and
+// their values against the dialect's table, repeated words, modal-group conflicts, loop
+// pairing (nct-macro.md §4.5) and GOTO targets. Needs no machine state.
+#pragma once
+#include <optional>
+#include <unordered_set>
+#include <vector>
+
+#include "diag/diagnostic.h"
+#include "dialect/profile.h"
+#include "ir/block.h"
+
+namespace gcx::check {
+
+class StaticChecker {
+public:
+  StaticChecker(const Profile& profile, diag::Engine& diags) : profile_(profile), diags_(diags) {}
+
+  void block(const ir::Block& b);
+  /// End of the file: unclosed loops, missing GOTO targets, empty program.
+  void finish(FileId file);
+
+private:
+  void words(const ir::Block& b);
+  void literal(const ir::Word& w, const AddressSpec& spec);
+  void dataRecord(const ir::Block& b);
+  void statement(const ir::Stmt& s);
+
+  struct OpenLoop {
+    int id;
+    SourceRange where;
+  };
+  struct Jump {
+    std::int64_t target;
+    SourceRange where;
+  };
+
+  const Profile& profile_;
+  diag::Engine& diags_;
+  std::size_t blocks_ = 0;
+  std::optional<SourceRange> percentAfterStart_;
+  std::vector<OpenLoop> loops_;
+  std::vector<Jump> jumps_;
+  std::unordered_set<std::int64_t> labels_;
+};
+
+} // namespace gcx::check

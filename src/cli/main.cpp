@@ -1,0 +1,56 @@
+// gcx: transpiler and toolchain between CNC G-code dialects.
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "cli/commands.h"
+
+int main(int argc, char** argv) {
+  using namespace gcx::cli;
+  CLI::App app{"gcx: parse, check, translate and execute CNC G-code dialects (NCT, ...)"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "gcx 0.1.0");
+
+  CommonOptions common;
+  auto addCommon = [&](CLI::App* cmd) {
+    cmd->add_option("--dialect", common.dialect,
+                    "dialect of the input (default: from the extension)")
+        ->check(CLI::IsMember({"nct"}));
+    cmd->add_flag("--json", common.json, "diagnostics as JSON");
+    cmd->add_option("--max-errors", common.maxErrors, "stop after this many errors")
+        ->check(CLI::PositiveNumber);
+  };
+
+  std::vector<std::string> checkFiles;
+  CLI::App* check = app.add_subcommand("check", "syntax and static checks");
+  check->add_option("FILE", checkFiles, "program files")->required();
+  addCommon(check);
+
+  std::string fmtFile, fmtOut;
+  CLI::App* fmt = app.add_subcommand("fmt", "print a program back as normalised text");
+  fmt->add_option("FILE", fmtFile, "program file")->required();
+  fmt->add_option("-o,--output", fmtOut, "output file (default: standard output)");
+  addCommon(fmt);
+
+  std::string dumpFile;
+  bool dumpIr = false;
+  CLI::App* dump = app.add_subcommand("dump", "print internal representations");
+  dump->add_option("FILE", dumpFile, "program file")->required();
+  dump->add_flag("--ir", dumpIr, "the IR, one JSON object per block")->required();
+  addCommon(dump);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return UsageError;
+  }
+
+  if (check->parsed()) return runCheck(checkFiles, common);
+  if (fmt->parsed()) return runFmt(fmtFile, fmtOut, common);
+  if (dump->parsed()) return runDumpIr(dumpFile, common);
+  return UsageError;
+}

@@ -1,0 +1,46 @@
+// Stable diagnostic codes. Where the NCT manual numbers an alarm we use its number (nct.md §1.11,
+// nct-macro.md §3.4); NCTXnn are the spec's numbers for errors the manual describes without one;
+// GCXnnn are gcx's own (input files, limits, static checks the manual leaves unnumbered).
+// docs/diagnostics.md lists them all; never renumber a code once released.
+#pragma once
+
+namespace gcx::diag::code {
+
+// --- manual alarm numbers
+inline constexpr const char* DataOutOfRange = "2002";
+inline constexpr const char* MissingData = "2004";
+inline constexpr const char* ForbiddenAddress = "2017";
+inline constexpr const char* SyntaxError = "2064";
+inline constexpr const char* IllegalIncremental = "2097";
+inline constexpr const char* WhileWithoutDo = "2110";
+inline constexpr const char* RightBracketNotFound = "2121";
+inline constexpr const char* BlockNotFound = "2125";
+
+// --- spec numbers (nct-macro.md §12)
+inline constexpr const char* LoopPairing = "NCTX06";
+inline constexpr const char* VariableNotAllowed = "NCTX10";
+inline constexpr const char* AtanTwoArgs = "NCTW02";
+
+// --- gcx: input files
+inline constexpr const char* CannotRead = "GCX001";
+inline constexpr const char* EmptyProgram = "GCX002";
+inline constexpr const char* BinaryFile = "GCX003";
+inline constexpr const char* InvalidUtf8 = "GCX004";
+inline constexpr const char* BlockTooLong = "GCX005";
+inline constexpr const char* UnterminatedComment = "GCX006";
+inline constexpr const char* MisplacedPercent = "GCX007";
+inline constexpr const char* TooManyErrors = "GCX009";
+// --- gcx: static block checks
+inline constexpr const char* RepeatedAddress = "GCX011";
+inline constexpr const char* ModalGroupConflict = "GCX012";
+inline constexpr const char* UnknownGCode = "GCX013";
+inline constexpr const char* ConflictingMCodes = "GCX014";
+inline constexpr const char* IncrementalNotAllowed = "GCX015";
+inline constexpr const char* TooManyDigits = "GCX016";
+// --- gcx: warnings
+inline constexpr const char* SignAlias = "GCXW01";
+inline constexpr const char* SkipLevelNine = "GCXW02";
+inline constexpr const char* StrayParen = "GCXW03";
+inline constexpr const char* MisplacedProgramNumber = "GCXW04";
+
+} // namespace gcx::diag::code

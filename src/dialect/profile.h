@@ -1,0 +1,47 @@
+// What differs between dialects, as data: the address table, the G-code table with its modal
+// groups, M-code rules. The core reads a Profile; it never asks which dialect it is running.
+#pragma once
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gcx {
+
+struct AddressSpec {
+  std::string address;      // "X", ",C", "AX"
+  bool decimal = true;      // a fraction may be written
+  bool sign = true;         // a minus sign may be written
+  bool incremental = false; // the I operator may follow the address
+  double min = -1e300;      // inclusive limits of a literal value (after the sign)
+  double max = 1e300;
+  bool repeatable = false; // may stand more than once in a block (G, M)
+  const char* meaning = "";
+};
+
+struct GCodeSpec {
+  int code10 = 0; // G code times ten: G84.2 -> 842
+  int group = 0;  // modal group, 0 = one-shot
+  const char* meaning = "";
+};
+
+struct Profile {
+  std::string name;
+  std::vector<AddressSpec> addresses;
+  std::vector<GCodeSpec> gcodes;
+  int maxMCodesPerBlock = 8;
+  std::vector<int> exclusiveMCodes; // at most one of these per block (spindle M3 M4 M5 M19)
+  int maxSignificantDigits = 15;
+  int maxSkipLevel = 9;
+  int documentedSkipLevel = 8;        // levels above it are accepted with a warning
+  std::vector<int> dataModeLCodes;    // G10 L<n> starts a data-entry section ended by G11
+  std::vector<int> macroCallGCodes10; // G65, G66, G66.1: every other letter is an argument
+
+  const AddressSpec* address(std::string_view a) const;
+  const GCodeSpec* gcode(double value) const;
+};
+
+/// G code value as an integer number of tenths, if it has at most one decimal (G84.2 -> 842).
+std::optional<int> gcodeTenths(double value);
+
+} // namespace gcx
