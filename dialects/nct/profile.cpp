@@ -1,5 +1,8 @@
 #include "dialects/nct/profile.h"
 
+#include "diag/diagnostic.h"
+#include "dialects/nct/arguments.h"
+
 namespace gcx::nct {
 
 namespace {
@@ -49,7 +52,7 @@ Profile build() {
       aux(",C", "chamfer"),
       aux(",R", "corner rounding radius"),
       aux(",A", "line direction angle"),
-      AddressSpec{"AX", true, true, true, -1e300, 1e300, false, "axis given by its number"},
+      AddressSpec{"AX", true, true, true, -1e300, 1e300, true, "axis given by its number"},
       AddressSpec{"<>", false, false, false, 0, 0, false, "program file of M98 / G65"},
   };
   // nct.md §2.1 (000:490-905) with the groups of nct-macro.md §2.9.4 (000:12690-12800).
@@ -166,6 +169,13 @@ Profile build() {
   p.exclusiveMCodes = {3, 4, 5, 19};   // one spindle command per block (000:4278-4280)
   p.dataModeLCodes = {52, 75, 76, 77}; // G10 L52 parameters, L75-77 tool tables (nct.md §1.10)
   p.macroCallGCodes10 = {650, 660, 661};
+  p.checkCallArguments = [](const ir::Block& b, diag::Engine& diags) {
+    // statically only literal values are known; a variable may be vacant and skip its slot
+    auto runtime = [](const ir::Word& w) { return !w.isLiteral(); };
+    auto vacant = [](const ir::Word&) { return false; };
+    ArgumentResult r = bindArguments(b, vacant, runtime);
+    if (!r.ok()) diags.error(r.code, r.offending->range, r.message);
+  };
   return p;
 }
 

@@ -571,18 +571,14 @@ void GrammarParser::Impl::report(const front::RawBlock& raw, diag::Engine& diags
     }
   }
   Token* off = first.token;
-  for (std::size_t k = 0; off && k < toks.size(); ++k) {
-    if (toks[k] != off || k == 0) continue;
-    if (toks[k - 1]->getType() == P::HASH) {
+  for (std::size_t k = 1; off && k < toks.size(); ++k) {
+    if (toks[k] != off || toks[k - 1]->getType() != P::HASH) continue;
+    if (off->getType() == P::HASH)  // `##120`
+      diags.error(diag::code::SyntaxError, at(off),
+                  "'##' is not allowed: write #[#n] for indirection");
+    else
       diags.error(diag::code::SyntaxError, at(toks[k - 1]),
                   "'#' must be followed by a variable number, '[expression]' or '_NAME'");
-      return;
-    }
-  }
-  if (off && off->getType() == P::HASH && !toks.empty() && toks.front() != off) {
-    // `##120`
-    diags.error(diag::code::SyntaxError, at(off),
-                "'#' must be followed by a variable number; write #[#n] for indirection");
     return;
   }
   if (!off || off->getType() == Token::EOF) {

@@ -79,6 +79,7 @@ void StaticChecker::words(const ir::Block& b) {
     return counts.back().second;
   };
 
+  if (callBlock) callArguments(b);
   for (const ir::Word& w : b.words) {
     const AddressSpec* spec = profile_.address(w.address);
     if (!spec) {
@@ -103,8 +104,11 @@ void StaticChecker::words(const ir::Block& b) {
       if (!w.isLiteral()) continue;
       const GCodeSpec* g = profile_.gcode(w.number);
       if (!g) {
-        diags_.error(diag::code::UnknownGCode, w.range,
-                     fmt::format("unknown G code G{}", formatNumber(w.number)));
+        // a parameter-defined macro call (N1704...) is legal; only the machine setup knows
+        diags_.warning(diag::code::UnknownGCode, w.range,
+                       fmt::format("G{} is not in the G-code table; it must be configured as a "
+                                   "macro call",
+                                   formatNumber(w.number)));
         continue;
       }
       if (g->group != 0 && g->group < static_cast<int>(groupSeen.size())) {
@@ -127,19 +131,14 @@ void StaticChecker::words(const ir::Block& b) {
                          "conflicting spindle M codes: M3, M4, M5 and M19 exclude each other");
       continue;
     }
-    if (n < 2 || spec->repeatable) continue;
-    if (callBlock) {
-      // arguments: I, J, K fill up to ten groups; N once more as #14 (nct-macro.md §5.4)
-      const bool ijk = w.is('I') || w.is('J') || w.is('K');
-      if (ijk && n <= 10) continue;
-      diags_.error(diag::code::ForbiddenAddress, w.range,
-                   w.is('N') ? std::string("a third N in a macro call block")
-                             : fmt::format("argument {} given twice in a macro call", w.address));
-      continue;
-    }
+    if (n < 2 || spec->repeatable || callBlock) continue;  // call blocks: see below
     diags_.error(diag::code::RepeatedAddress, w.range,
                  fmt::format("address {} appears twice in one block", w.address));
   }
+}
+
+void StaticChecker::callArguments(const ir::Block& b) {
+  if (profile_.checkCallArguments) profile_.checkCallArguments(b, diags_);
 }
 
 void StaticChecker::dataRecord(const ir::Block& b) {
@@ -166,11 +165,9 @@ void StaticChecker::statement(const ir::Stmt& s) {
   switch (s.kind) {
   case ir::StmtKind::While:
   case ir::StmtKind::Do: {
-    if (s.loopId < 1 || s.loopId > 3) {
+    if (s.loopId < 1 || s.loopId > 3)  // still paired below, so its END does not cascade
       diags_.error(diag::code::DataOutOfRange, s.range,
                    fmt::format("DO{} is out of range: loop numbers are 1-3", s.loopId));
-      return;
-    }
     for (const OpenLoop& l : loops_)
       if (l.id == s.loopId) {
         diags_.error(diag::code::LoopPairing, s.range,
@@ -194,10 +191,13 @@ void StaticChecker::statement(const ir::Stmt& s) {
                    fmt::format("END{} closes DO{} while DO{} inside it is still open (loops must "
                                "nest)",
                                s.loopId, s.loopId, loops_.back().id));
-      while (loops_.back().id != s.loopId)
-        loops_.pop_back();
     }
-    loops_.pop_back();
+    // drop only the loop END closes, so the inner one still pairs with its own END
+    for (auto it = loops_.rbegin(); it != loops_.rend(); ++it)
+      if (it->id == s.loopId) {
+        loops_.erase(std::next(it).base());
+        break;
+      }
     return;
   }
   case ir::StmtKind::Goto:
@@ -210,7 +210,7 @@ void StaticChecker::statement(const ir::Stmt& s) {
   }
 }
 
-void StaticChecker::finish(FileId file) {
+void StaticChecker::finish(FileId file, bool sawBlocks) {
   for (const OpenLoop& l : loops_)
     diags_.error(diag::code::LoopPairing, l.where,
                  fmt::format("DO{} without END{} in this file", l.id, l.id));
@@ -220,7 +220,7 @@ void StaticChecker::finish(FileId file) {
       diags_.error(diag::code::BlockNotFound, j.where,
                    fmt::format("block N{} not found in this file", j.target));
   jumps_.clear();
-  if (blocks_ == 0)
+  if (blocks_ == 0 && !sawBlocks)
     diags_.error(diag::code::EmptyProgram, SourceRange{SourceLoc{file, 1, 1, 0}, 0},
                  "the program has no blocks");
 }

@@ -17,13 +17,15 @@ public:
   StaticChecker(const Profile& profile, diag::Engine& diags) : profile_(profile), diags_(diags) {}
 
   void block(const ir::Block& b);
-  /// End of the file: unclosed loops, missing GOTO targets, empty program.
-  void finish(FileId file);
+  /// End of the file: unclosed loops, missing GOTO targets, empty program (sawBlocks: the
+  /// source held blocks, even if none parsed).
+  void finish(FileId file, bool sawBlocks);
 
 private:
   void words(const ir::Block& b);
   void literal(const ir::Word& w, const AddressSpec& spec);
   void dataRecord(const ir::Block& b);
+  void callArguments(const ir::Block& b);
   void statement(const ir::Stmt& s);
 
   struct OpenLoop {

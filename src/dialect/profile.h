@@ -1,12 +1,20 @@
 // What differs between dialects, as data: the address table, the G-code table with its modal
 // groups, M-code rules. The core reads a Profile; it never asks which dialect it is running.
 #pragma once
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace gcx {
+
+namespace ir {
+struct Block;
+}
+namespace diag {
+class Engine;
+}
 
 struct AddressSpec {
   std::string address;      // "X", ",C", "AX"
@@ -36,6 +44,8 @@ struct Profile {
   int documentedSkipLevel = 8;        // levels above it are accepted with a warning
   std::vector<int> dataModeLCodes;    // G10 L<n> starts a data-entry section ended by G11
   std::vector<int> macroCallGCodes10; // G65, G66, G66.1: every other letter is an argument
+  /// Static check of a macro call block's arguments (the dialect's argument specification).
+  std::function<void(const ir::Block&, diag::Engine&)> checkCallArguments;
 
   const AddressSpec* address(std::string_view a) const;
   const GCodeSpec* gcode(double value) const;
