@@ -16,9 +16,7 @@ public:
   NctSource(std::istream& in, FileId file, diag::Engine& diags) : reader_(in, file, diags) {}
   bool next(ir::Block& out) override { return reader_.next(out); }
   bool sawInput() const override { return reader_.sawInput(); }
-  std::size_t rawBlocks() const override {
-    return reader_.stats().blocks + reader_.stats().failed;
-  }
+  std::size_t failedBlocks() const override { return reader_.stats().failed; }
 
 private:
   nct::Reader reader_;

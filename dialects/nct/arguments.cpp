@@ -10,8 +10,8 @@ namespace {
 // Specification I: letter -> local variable (000:14580-14611); I, J, K are handled apart.
 int specOneVariable(char letter) {
   static const int table[26] = {
-      1,  2,  3,  7,  8,  9,  10, 11, 4,  5,  6,  12, 13,  // A..M (I,J,K = first group)
-      14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26,  // N..Z
+      1,  2,  3,  7,  8,  9,  10, 11, 4,  5,  6,  12, 13, // A..M (I,J,K = first group)
+      14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, // N..Z
   };
   return table[letter - 'A'];
 }
@@ -39,18 +39,19 @@ ArgumentResult bindArguments(const ir::Block& block, const VacantValue& vacant,
     const char letter = w.address[0];
     int v = 0;
     if (letter == 'I' || letter == 'J' || letter == 'K') {
-      const int offset = letter - 'I' + 1;  // I -> 3g+1, J -> 3g+2, K -> 3g+3
+      const int offset = letter - 'I' + 1; // I -> 3g+1, J -> 3g+2, K -> 3g+3
       for (int g = 1; g <= 10 && !v; ++g)
         if (!taken[3 * g + offset]) v = 3 * g + offset;
       if (!v)
-        return fail(w, diag::code::ForbiddenAddress,
-                    fmt::format("forbidden address {}: all ten {} groups are used", letter, letter));
+        return fail(
+            w, diag::code::ForbiddenAddress,
+            fmt::format("forbidden address {}: all ten {} groups are used", letter, letter));
     } else {
       v = specOneVariable(letter);
       if (taken[v])
-        return fail(w, diag::code::ForbiddenAddress,
-                    fmt::format("forbidden address {}: variable #{} already holds an argument",
-                                letter, v));
+        return fail(
+            w, diag::code::ForbiddenAddress,
+            fmt::format("forbidden address {}: variable #{} already holds an argument", letter, v));
     }
     taken[v] = true;
     r.bindings.push_back({v, &w});

@@ -10,14 +10,14 @@
 namespace gcx::nct {
 
 struct ArgumentBinding {
-  int variable = 0;  // 1..33
+  int variable = 0; // 1..33
   const ir::Word* word = nullptr;
 };
 
 struct ArgumentResult {
   std::vector<ArgumentBinding> bindings;
-  const ir::Word* offending = nullptr;  // the word that caused the error
-  const char* code = nullptr;           // 2017 or 2064
+  const ir::Word* offending = nullptr; // the word that caused the error
+  const char* code = nullptr;          // 2017 or 2064
   std::string message;
   bool ok() const { return offending == nullptr; }
 };

@@ -44,7 +44,15 @@ bool wholeNumber(std::string_view digits, std::int64_t& value) {
 
 BlockBuilder::BlockBuilder(const front::RawBlock& raw, ir::Block& out, diag::Engine& diags)
     : raw_(raw), out_(out), diags_(diags) {
-  out_ = ir::Block{};
+  // reset field by field: clearing keeps the vectors' capacity for the next block
+  out_.kind = ir::BlockKind::Normal;
+  out_.skipLevel = 0;
+  out_.sequence.reset();
+  out_.sequenceRange = {};
+  out_.programNumber.reset();
+  out_.words.clear();
+  out_.stmt.reset();
+  out_.comments.clear();
   out_.range = SourceRange{raw.begin, static_cast<std::uint32_t>(raw.text.size())};
   out_.lastLine = raw.lastLine();
 }

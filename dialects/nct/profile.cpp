@@ -176,6 +176,7 @@ Profile build() {
     ArgumentResult r = bindArguments(b, vacant, runtime);
     if (!r.ok()) diags.error(r.code, r.offending->range, r.message);
   };
+  p.index();
   return p;
 }
 

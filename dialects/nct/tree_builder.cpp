@@ -151,13 +151,15 @@ public:
     }
     for (auto* w : body->word())
       word(w);
-    // `N#1`: a variable where a block number stands (macro B2, 000:11857)
-    if (!ctx->sequenceNumber() && !b_.block().words.empty()) {
-      const ir::Word& first = b_.block().words.front();
-      if (first.is('N') && first.kind != ir::ValueKind::Number) {
-        b_.diags().error(diag::code::VariableNotAllowed, first.range,
-                         "a block number must be a literal, not a variable or expression");
+    // `N#1`, `O#1`: a variable where a block or program number stands (macro B2, 000:11857)
+    for (const ir::Word& w : b_.block().words) {
+      const bool blockNumber = w.is('N') && !ctx->sequenceNumber() && &w == &b_.block().words[0];
+      if ((blockNumber || w.is('O')) && w.kind != ir::ValueKind::Number) {
+        b_.diags().error(diag::code::VariableNotAllowed, w.range,
+                         fmt::format("{} must be a literal number, not a variable or expression",
+                                     w.is('O') ? "a program number" : "a block number"));
         b_.fail();
+        break;
       }
     }
   }
@@ -171,6 +173,9 @@ private:
     return t->getSymbol()->getStartIndex();
   }
   SourceRange range(antlr4::ParserRuleContext* c) const { return b_.range(start(c), length(c)); }
+  SourceRange span(antlr4::tree::TerminalNode* from, antlr4::tree::TerminalNode* to) const {
+    return b_.range(start(from), to->getSymbol()->getStopIndex() + 1 - start(from));
+  }
 
   void word(P::WordContext* w) {
     if (auto* aw = dynamic_cast<P::AddressWordContext*>(w)) {
@@ -396,10 +401,15 @@ private:
       ir::Stmt& s = newStmt(st, ir::StmtKind::While);
       condition(s, wh->condition());
       s.loopId = loopId(wh->NUMBER());
+      s.loopRange = span(wh->DO(), wh->NUMBER());
     } else if (auto* d = dynamic_cast<P::DoStatementContext*>(st)) {
-      newStmt(st, ir::StmtKind::Do).loopId = loopId(d->NUMBER());
+      ir::Stmt& s = newStmt(st, ir::StmtKind::Do);
+      s.loopId = loopId(d->NUMBER());
+      s.loopRange = span(d->DO(), d->NUMBER());
     } else if (auto* en = dynamic_cast<P::EndStatementContext*>(st)) {
-      newStmt(st, ir::StmtKind::End).loopId = loopId(en->NUMBER());
+      ir::Stmt& s = newStmt(st, ir::StmtKind::End);
+      s.loopId = loopId(en->NUMBER());
+      s.loopRange = span(en->END(), en->NUMBER());
     } else if (auto* pr = dynamic_cast<P::PrintStatementContext*>(st)) {
       ir::Stmt& s = newStmt(st, ir::StmtKind::Print);
       printItems(s, pr->PRINT_COMMAND());
@@ -570,10 +580,16 @@ void GrammarParser::Impl::report(const front::RawBlock& raw, diag::Engine& diags
       }
     }
   }
+  // `/#1`: the skip level must be a literal (macro B2)
+  if (toks.size() >= 2 && toks[0]->getType() == P::SLASH && toks[1]->getType() == P::HASH) {
+    diags.error(diag::code::VariableNotAllowed, at(toks[0]),
+                "a block skip level must be a literal number, not a variable");
+    return;
+  }
   Token* off = first.token;
   for (std::size_t k = 1; off && k < toks.size(); ++k) {
     if (toks[k] != off || toks[k - 1]->getType() != P::HASH) continue;
-    if (off->getType() == P::HASH)  // `##120`
+    if (off->getType() == P::HASH) // `##120`
       diags.error(diag::code::SyntaxError, at(off),
                   "'##' is not allowed: write #[#n] for indirection");
     else
@@ -601,8 +617,11 @@ void GrammarParser::Impl::report(const front::RawBlock& raw, diag::Engine& diags
     if (toks[k] != off) continue;
     const auto prev = toks[k - 1]->getType();
     if (prev >= P::A && prev <= P::Z && off->getType() >= P::A && off->getType() <= P::Z) {
-      diags.error(diag::code::MissingData, at(toks[k - 1]),
-                  fmt::format("address '{}' has no value", toks[k - 1]->getText()));
+      Token* from = k >= 2 && toks[k - 2]->getType() == P::COMMA ? toks[k - 2] : toks[k - 1];
+      const std::size_t len = toks[k - 1]->getStopIndex() + 1 - from->getStartIndex();
+      diags.error(diag::code::MissingData, raw.rangeAt(from->getStartIndex(), len),
+                  fmt::format("address '{}' has no value",
+                              raw.lexText.substr(from->getStartIndex(), len)));
       return;
     }
   }

@@ -131,7 +131,7 @@ void StaticChecker::words(const ir::Block& b) {
                          "conflicting spindle M codes: M3, M4, M5 and M19 exclude each other");
       continue;
     }
-    if (n < 2 || spec->repeatable || callBlock) continue;  // call blocks: see below
+    if (n < 2 || spec->repeatable || callBlock) continue; // call blocks: see below
     diags_.error(diag::code::RepeatedAddress, w.range,
                  fmt::format("address {} appears twice in one block", w.address));
   }
@@ -165,16 +165,16 @@ void StaticChecker::statement(const ir::Stmt& s) {
   switch (s.kind) {
   case ir::StmtKind::While:
   case ir::StmtKind::Do: {
-    if (s.loopId < 1 || s.loopId > 3)  // still paired below, so its END does not cascade
-      diags_.error(diag::code::DataOutOfRange, s.range,
+    if (s.loopId < 1 || s.loopId > 3) // still paired below, so its END does not cascade
+      diags_.error(diag::code::DataOutOfRange, s.loopRange,
                    fmt::format("DO{} is out of range: loop numbers are 1-3", s.loopId));
     for (const OpenLoop& l : loops_)
       if (l.id == s.loopId) {
-        diags_.error(diag::code::LoopPairing, s.range,
+        diags_.error(diag::code::LoopPairing, s.loopRange,
                      fmt::format("DO{} is already open (nct-macro.md §4.4 W6)", s.loopId));
-        return;
+        break; // still pushed, so the two END's pair without cascading errors
       }
-    loops_.push_back({s.loopId, s.range});
+    loops_.push_back({s.loopId, s.loopRange});
     return;
   }
   case ir::StmtKind::End: {
@@ -210,7 +210,7 @@ void StaticChecker::statement(const ir::Stmt& s) {
   }
 }
 
-void StaticChecker::finish(FileId file, bool sawBlocks) {
+void StaticChecker::finish(FileId file, bool hadBadBlocks) {
   for (const OpenLoop& l : loops_)
     diags_.error(diag::code::LoopPairing, l.where,
                  fmt::format("DO{} without END{} in this file", l.id, l.id));
@@ -220,7 +220,7 @@ void StaticChecker::finish(FileId file, bool sawBlocks) {
       diags_.error(diag::code::BlockNotFound, j.where,
                    fmt::format("block N{} not found in this file", j.target));
   jumps_.clear();
-  if (blocks_ == 0 && !sawBlocks)
+  if (blocks_ == 0 && !hadBadBlocks)
     diags_.error(diag::code::EmptyProgram, SourceRange{SourceLoc{file, 1, 1, 0}, 0},
                  "the program has no blocks");
 }

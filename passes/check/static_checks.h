@@ -17,9 +17,9 @@ public:
   StaticChecker(const Profile& profile, diag::Engine& diags) : profile_(profile), diags_(diags) {}
 
   void block(const ir::Block& b);
-  /// End of the file: unclosed loops, missing GOTO targets, empty program (sawBlocks: the
-  /// source held blocks, even if none parsed).
-  void finish(FileId file, bool sawBlocks);
+  /// End of the file: unclosed loops, missing GOTO targets, an empty program (unless blocks
+  /// were there but failed to parse: hadBadBlocks).
+  void finish(FileId file, bool hadBadBlocks);
 
 private:
   void words(const ir::Block& b);

@@ -23,7 +23,7 @@ int runCheck(const std::vector<std::string>& files, const CommonOptions& opt) {
       checker.block(block);
       ++blocks;
     }
-    checker.finish(s.file(), s.source().rawBlocks() > 0);
+    checker.finish(s.file(), s.source().failedBlocks() > 0);
     const std::size_t errors = s.diags().errorCount(), warnings = s.diags().warningCount();
     s.flushDiagnostics();
     if (!opt.json)

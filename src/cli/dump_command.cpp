@@ -17,7 +17,7 @@ int runDumpIr(const std::string& file, const CommonOptions& opt) {
     checker.block(block);
     std::cout << ir::toJson(block, true).dump() << '\n';
   }
-  checker.finish(s.file(), s.source().rawBlocks() > 0);
+  checker.finish(s.file(), s.source().failedBlocks() > 0);
   const bool failed = s.diags().hasErrors();
   CommonOptions quiet = opt;
   s.flushDiagnostics();

@@ -32,7 +32,7 @@ int runFmt(const std::string& file, const std::string& output, const CommonOptio
     checker.block(block);
     out << s.dialect().print(block) << '\n';
   }
-  checker.finish(s.file(), s.source().rawBlocks() > 0);
+  checker.finish(s.file(), s.source().failedBlocks() > 0);
   out.close();
   const bool failed = s.diags().hasErrors() || !out;
   s.flushDiagnostics();

@@ -41,6 +41,5 @@ inline constexpr const char* TooManyDigits = "GCX016";
 inline constexpr const char* SignAlias = "GCXW01";
 inline constexpr const char* SkipLevelNine = "GCXW02";
 inline constexpr const char* StrayParen = "GCXW03";
-inline constexpr const char* MisplacedProgramNumber = "GCXW04";
 
 } // namespace gcx::diag::code

@@ -19,8 +19,8 @@ public:
   virtual bool next(ir::Block& out) = 0;
   /// True if the input held at least one byte.
   virtual bool sawInput() const = 0;
-  /// Non-blank blocks read so far, including those that had errors.
-  virtual std::size_t rawBlocks() const = 0;
+  /// Blocks that had errors and were skipped.
+  virtual std::size_t failedBlocks() const = 0;
 };
 
 struct Dialect {

@@ -4,7 +4,19 @@
 
 namespace gcx {
 
+void Profile::index() {
+  letters_.fill(0);
+  for (std::size_t i = 0; i < addresses.size(); ++i) {
+    const std::string& a = addresses[i].address;
+    if (a.size() == 1 && a[0] >= 'A' && a[0] <= 'Z') letters_[a[0] - 'A'] = static_cast<int>(i + 1);
+  }
+}
+
 const AddressSpec* Profile::address(std::string_view a) const {
+  if (a.size() == 1 && a[0] >= 'A' && a[0] <= 'Z') {
+    const int slot = letters_[a[0] - 'A'];
+    return slot ? &addresses[slot - 1] : nullptr;
+  }
   for (const AddressSpec& s : addresses)
     if (s.address == a) return &s;
   return nullptr;

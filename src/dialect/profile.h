@@ -1,6 +1,7 @@
 // What differs between dialects, as data: the address table, the G-code table with its modal
 // groups, M-code rules. The core reads a Profile; it never asks which dialect it is running.
 #pragma once
+#include <array>
 #include <functional>
 #include <optional>
 #include <string>
@@ -48,7 +49,12 @@ struct Profile {
   std::function<void(const ir::Block&, diag::Engine&)> checkCallArguments;
 
   const AddressSpec* address(std::string_view a) const;
+  /// Builds the lookup tables; call once after filling the vectors.
+  void index();
   const GCodeSpec* gcode(double value) const;
+
+private:
+  std::array<int, 26> letters_{}; // index+1 into addresses of single letters (0: none)
 };
 
 /// G code value as an integer number of tenths, if it has at most one decimal (G84.2 -> 842).

@@ -72,6 +72,7 @@ struct Stmt {
   std::string path;              // Fopen <file>
   std::string message;           // text of the comment after #3000= / #3006= ... (macro L4)
   SourceRange range;
+  SourceRange loopRange; // While / Do / End: the `DOm` / `ENDm` keyword with its number
 };
 
 struct Comment {

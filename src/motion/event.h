@@ -16,28 +16,28 @@ using Vec3 = Eigen::Vector3d;
 /// Where an event came from: the source block and the chain of calls that led to it
 /// ("in O9010 called from main.nct:12, loop iteration 3").
 struct Frame {
-  SourceLoc call;      // the calling block (or the loop head)
-  std::string what;    // "O9010", "G65 P9010", "WHILE iteration 3", "G81 hole 2"
+  SourceLoc call;   // the calling block (or the loop head)
+  std::string what; // "O9010", "G65 P9010", "WHILE iteration 3", "G81 hole 2"
 };
 struct Provenance {
-  SourceLoc at;               // the block that produced the event
-  std::vector<Frame> chain;   // outermost first
+  SourceLoc at;             // the block that produced the event
+  std::vector<Frame> chain; // outermost first
 };
 
-enum class Plane { XY, ZX, YZ };  // G17, G18, G19
+enum class Plane { XY, ZX, YZ }; // G17, G18, G19
 
 enum class Kind {
-  Rapid,       // straight traverse start -> end
-  Feed,        // straight feed start -> end
-  Arc,         // arc/helix/spiral start -> end about center in plane
-  Dwell,       // seconds (or revolutions when perRevolution)
-  Spindle,     // speed and direction (+1 CW M3, -1 CCW M4, 0 stop M5)
-  SpindleOrient,  // M19
-  ToolChange,  // tool number
-  Coolant,     // on/off (M7 mist, M8 flood, M9 off)
-  Stop,        // M0 / M1 (optional)
-  End,         // M2 / M30
-  Message,     // operator message (#3006, DPRNT to screen, ...)
+  Rapid,         // straight traverse start -> end
+  Feed,          // straight feed start -> end
+  Arc,           // arc/helix/spiral start -> end about center in plane
+  Dwell,         // seconds (or revolutions when perRevolution)
+  Spindle,       // speed and direction (+1 CW M3, -1 CCW M4, 0 stop M5)
+  SpindleOrient, // M19
+  ToolChange,    // tool number
+  Coolant,       // on/off (M7 mist, M8 flood, M9 off)
+  Stop,          // M0 / M1 (optional)
+  End,           // M2 / M30
+  Message,       // operator message (#3006, DPRNT to screen, ...)
 };
 
 struct Event {
@@ -47,20 +47,20 @@ struct Event {
   // geometry, machine frame, mm (the gauge point: tool tip + length offset + work offset)
   Vec3 start = Vec3::Zero();
   Vec3 end = Vec3::Zero();
-  Vec3 center = Vec3::Zero();  // Arc: centre at the start point's height along the normal
-  Plane plane = Plane::XY;     // Arc
-  bool clockwise = false;      // Arc: seen from the positive normal axis
-  int turns = 0;               // Arc: extra full turns beyond the first sweep (NCT L-1)
-  double startRadius = 0;      // Arc: radius at start; endRadius differs for spirals
+  Vec3 center = Vec3::Zero(); // Arc: centre at the start point's height along the normal
+  Plane plane = Plane::XY;    // Arc
+  bool clockwise = false;     // Arc: seen from the positive normal axis
+  int turns = 0;              // Arc: extra full turns beyond the first sweep (NCT L-1)
+  double startRadius = 0;     // Arc: radius at start; endRadius differs for spirals
   double endRadius = 0;
 
   // feed and other values
-  double feed = 0;             // mm/min, or mm/rev when perRevolution
-  bool perRevolution = false;  // G95 feed, or G4 in revolutions
-  double value = 0;            // Dwell time, Spindle speed, ToolChange tool, Coolant code
-  int direction = 0;           // Spindle: +1 CW, -1 CCW, 0 stop
-  bool optional = false;       // Stop: M1
-  std::string text;            // Message
+  double feed = 0;            // mm/min, or mm/rev when perRevolution
+  bool perRevolution = false; // G95 feed, or G4 in revolutions
+  double value = 0;           // Dwell time, Spindle speed, ToolChange tool, Coolant code
+  int direction = 0;          // Spindle: +1 CW, -1 CCW, 0 stop
+  bool optional = false;      // Stop: M1
+  std::string text;           // Message
 };
 
 /// A consumer of motion events.

@@ -1,0 +1,11 @@
+# Runs GCX with ARGS and checks the exit code and a piece of standard error.
+execute_process(COMMAND ${GCX} ${ARGS} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL EXPECT_EXIT)
+  message(FATAL_ERROR "exit code ${rc}, expected ${EXPECT_EXIT}\nstdout: ${out}\nstderr: ${err}")
+endif()
+if(DEFINED EXPECT_STDERR)
+  string(FIND "${err}" "${EXPECT_STDERR}" pos)
+  if(pos EQUAL -1)
+    message(FATAL_ERROR "stderr lacks '${EXPECT_STDERR}':\n${err}")
+  endif()
+endif()
