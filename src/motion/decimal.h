@@ -1,0 +1,13 @@
+// Decimal text for traces and pictures: at most N decimals, trailing zeros dropped, never an
+// exponent (so every reader, including line-oriented tools, sees plain numbers), "-0" as "0".
+#pragma once
+#include <string>
+
+namespace gcx::motion {
+
+/// Appends v rounded to at most `decimals` (0..17) places. Non-finite values are written as
+/// "null", which keeps JSON output valid; callers that cannot accept it must check first.
+void appendDecimal(std::string& out, double v, int decimals = 6);
+std::string formatDecimal(double v, int decimals = 6);
+
+} // namespace gcx::motion

@@ -1,0 +1,172 @@
+#include "motion/svg_plotter.h"
+
+#include <gtest/gtest.h>
+#include <regex>
+#include <sstream>
+
+#include "motion/event_builders.h"
+
+namespace gcx::motion {
+namespace {
+
+using namespace test;
+
+// A tiny well-formedness check: tags balance, attribute values are quoted and free of '<',
+// every '&' starts an entity, exactly one root element.
+::testing::AssertionResult wellFormed(const std::string& xml) {
+  std::vector<std::string> open;
+  int roots = 0;
+  for (std::size_t i = 0; i < xml.size();) {
+    if (xml[i] == '&') {
+      const auto semi = xml.find(';', i);
+      const std::string ent = xml.substr(i, semi == std::string::npos ? 8 : semi - i + 1);
+      if (!std::regex_match(ent, std::regex("&(amp|lt|gt|quot|apos|#[0-9]+);")))
+        return ::testing::AssertionFailure() << "bad entity at " << i;
+      i += ent.size();
+      continue;
+    }
+    if (xml[i] != '<') {
+      if (open.empty() && !std::isspace(static_cast<unsigned char>(xml[i])))
+        return ::testing::AssertionFailure() << "text outside the root at " << i;
+      ++i;
+      continue;
+    }
+    if (xml.compare(i, 2, "<?") == 0) {
+      i = xml.find("?>", i) + 2;
+      continue;
+    }
+    // scan the tag, honouring quotes
+    std::size_t j = i + 1;
+    char quote = 0;
+    for (; j < xml.size() && (quote || xml[j] != '>'); ++j) {
+      if (quote && xml[j] == '<') return ::testing::AssertionFailure() << "'<' in attribute";
+      if (xml[j] == '"' || xml[j] == '\'') quote = quote == xml[j] ? 0 : quote ? quote : xml[j];
+    }
+    if (j >= xml.size()) return ::testing::AssertionFailure() << "unterminated tag at " << i;
+    std::string tag = xml.substr(i + 1, j - i - 1);
+    i = j + 1;
+    if (tag[0] == '/') {
+      const std::string name = tag.substr(1);
+      if (open.empty() || open.back() != name)
+        return ::testing::AssertionFailure() << "unbalanced </" << name << ">";
+      open.pop_back();
+      continue;
+    }
+    const bool selfClosing = tag.back() == '/';
+    const std::string name = tag.substr(0, tag.find_first_of(" \t\n/"));
+    if (open.empty()) ++roots;
+    if (!selfClosing) open.push_back(name);
+  }
+  if (!open.empty()) return ::testing::AssertionFailure() << "<" << open.back() << "> not closed";
+  if (roots != 1) return ::testing::AssertionFailure() << roots << " root elements";
+  return ::testing::AssertionSuccess();
+}
+
+std::size_t count(const std::string& s, const std::string& what) {
+  std::size_t n = 0;
+  for (auto p = s.find(what); p != std::string::npos; p = s.find(what, p + 1))
+    ++n;
+  return n;
+}
+
+std::vector<std::string> pathElements(const std::string& svg) {
+  std::vector<std::string> out;
+  for (auto p = svg.find("<path "); p != std::string::npos; p = svg.find("<path ", p + 1))
+    out.push_back(svg.substr(p, svg.find("/>", p) - p));
+  return out;
+}
+
+// The example in svg_plotter.h: 4 runs.
+std::vector<Event> program() {
+  return {
+      rapid({0, 0, 10}, {0, 0, 2}),
+      rapid({0, 0, 2}, {10, 0, 2}), // continues the rapid run                    run 1
+      valueEvent(Kind::Spindle, 1000),
+      feed({10, 0, 2}, {10, 0, 0}), //                                             run 2
+      arc(Plane::XY, {10, 0, 0}, {0, 10, 0}, {0, 0, 0}, false),
+      valueEvent(Kind::Dwell, 1),   // does not break the run
+      feed({0, 10, 0}, {0, 10, 0}), // zero length: not drawn, does not break the run
+      feed({0, 10, 0}, {0, 20, 0}),
+      rapid({0, 20, 0}, {0, 20, 5}), //                                            run 3
+      feed({5, 5, 5}, {6, 6, 5}),    // starts elsewhere                           run 4
+  };
+}
+
+std::string plot(const std::vector<Event>& events, SvgOptions opt = {}) {
+  std::ostringstream out;
+  SvgPlotter p(out, opt);
+  for (const Event& e : events)
+    p.event(e);
+  p.finish();
+  return out.str();
+}
+
+TEST(SvgPlotter, OnePathPerRunInEveryView) {
+  for (const char* name : {"xy", "xz", "yz", "iso"}) {
+    SvgOptions opt;
+    opt.view = *parseView(name);
+    const std::string svg = plot(program(), opt);
+    EXPECT_TRUE(wellFormed(svg)) << name << "\n" << svg;
+    const auto paths = pathElements(svg);
+    ASSERT_EQ(paths.size(), 4u) << name;
+    // rapids dashed, feeds solid
+    for (std::size_t i : {0u, 2u}) {
+      EXPECT_NE(paths[i].find("class=\"rapid\""), std::string::npos);
+      EXPECT_NE(paths[i].find("stroke-dasharray="), std::string::npos);
+    }
+    for (std::size_t i : {1u, 3u}) {
+      EXPECT_NE(paths[i].find("class=\"feed\""), std::string::npos);
+      EXPECT_EQ(paths[i].find("stroke-dasharray"), std::string::npos);
+    }
+  }
+  EXPECT_FALSE(parseView("XY").has_value());
+}
+
+TEST(SvgPlotter, RunCountMatchesPathElements) {
+  std::ostringstream unused;
+  SvgPlotter p(unused);
+  for (const Event& e : program())
+    p.event(e);
+  EXPECT_EQ(p.runCount(), 4u);
+  // A feed after a rapid that ends where the feed starts is still a new run (new style).
+  p.event(feed({6, 6, 5}, {6, 6, 0}));
+  p.event(rapid({6, 6, 0}, {6, 6, 10}));
+  p.event(feed({6, 6, 10}, {7, 6, 10}));
+  EXPECT_EQ(p.runCount(), 6u);
+}
+
+TEST(SvgPlotter, FlipsYAndFitsTheViewBox) {
+  const std::string svg = plot({feed({0, 0, 0}, {10, 20, 0})});
+  // size 20, margin 1, band 3.5·0.5 = 1.75 above
+  EXPECT_NE(svg.find("d=\"M0 0L10 -20\""), std::string::npos) << svg;
+  EXPECT_NE(svg.find("viewBox=\"-1 -22.75 12 23.75\""), std::string::npos) << svg;
+  EXPECT_NE(svg.find("width=\"800\" height=\"1583.3333\""), std::string::npos) << svg;
+}
+
+TEST(SvgPlotter, IsometricProjection) {
+  // (1,1,0) lies on the screen's right axis; (0,0,1) straight up.
+  const std::string svg =
+      plot({feed({0, 0, 0}, {1, 1, 0}), feed({1, 1, 0}, {1, 1, 1})}, SvgOptions{View::Iso});
+  EXPECT_NE(svg.find("d=\"M0 0L1.41421 0 1.41421 -0.8165\""), std::string::npos) << svg;
+}
+
+TEST(SvgPlotter, EscapesTheTitleAndHandlesAnEmptyPath) {
+  SvgOptions opt;
+  opt.title = "a<b & \"c\" \x01 \xff";
+  const std::string svg = plot({}, opt);
+  EXPECT_TRUE(wellFormed(svg)) << svg;
+  EXPECT_EQ(count(svg, "<path"), 0u);
+  EXPECT_NE(svg.find("a&lt;b &amp; &quot;c&quot;   \xEF\xBF\xBD (XY)"), std::string::npos) << svg;
+}
+
+TEST(SvgPlotter, ArcsAreSampled) {
+  const std::string svg =
+      plot({arc(Plane::XY, {10, 0, 0}, {10, 0, 0}, {0, 0, 0}, false)}); // full circle
+  const auto paths = pathElements(svg);
+  ASSERT_EQ(paths.size(), 1u);
+  // tolerance 1e-3 · 20 = 0.02 on radius 10: ceil(2π / √(8·0.02/10)) = 50 segments
+  EXPECT_EQ(count(paths[0], " "), 4u + 2 * 50) << paths[0];
+}
+
+} // namespace
+} // namespace gcx::motion
