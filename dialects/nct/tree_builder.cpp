@@ -619,9 +619,9 @@ void GrammarParser::Impl::report(const front::RawBlock& raw, diag::Engine& diags
     if (prev >= P::A && prev <= P::Z && off->getType() >= P::A && off->getType() <= P::Z) {
       Token* from = k >= 2 && toks[k - 2]->getType() == P::COMMA ? toks[k - 2] : toks[k - 1];
       const std::size_t len = toks[k - 1]->getStopIndex() + 1 - from->getStartIndex();
-      diags.error(diag::code::MissingData, raw.rangeAt(from->getStartIndex(), len),
-                  fmt::format("address '{}' has no value",
-                              raw.lexText.substr(from->getStartIndex(), len)));
+      diags.error(
+          diag::code::MissingData, raw.rangeAt(from->getStartIndex(), len),
+          fmt::format("address '{}' has no value", raw.lexText.substr(from->getStartIndex(), len)));
       return;
     }
   }

@@ -15,8 +15,31 @@ struct CommonOptions {
   std::size_t maxErrors = 50;
 };
 
+struct ExpandOptions {
+  CommonOptions common;
+  std::string to;
+  std::string output; // empty: standard output
+  std::string setup;
+  bool provenance = false;
+};
+struct RunOptions {
+  CommonOptions common;
+  std::string setup;
+  std::string trace;
+  bool stats = false;
+};
+struct PlotOptions {
+  CommonOptions common;
+  std::string setup;
+  std::string output;
+  std::string view = "xy";
+};
+
 int runCheck(const std::vector<std::string>& files, const CommonOptions& opt);
 int runFmt(const std::string& file, const std::string& output, const CommonOptions& opt);
 int runDumpIr(const std::string& file, const CommonOptions& opt);
+int runExpand(const std::string& file, const ExpandOptions& opt);
+int runRun(const std::string& file, const RunOptions& opt);
+int runPlot(const std::string& file, const PlotOptions& opt);
 
 } // namespace gcx::cli

@@ -38,6 +38,36 @@ int main(int argc, char** argv) {
   dump->add_flag("--ir", dumpIr, "the IR, one JSON object per block")->required();
   addCommon(dump);
 
+  ExpandOptions expandOpt;
+  std::string expandFile;
+  CLI::App* expand = app.add_subcommand("expand", "expand to flat motion in a target dialect");
+  expand->add_option("FILE", expandFile, "program file")->required();
+  expand->add_option("--to", expandOpt.to, "target: canonical (RS274/NGC that LinuxCNC runs)")
+      ->required();
+  expand->add_option("-o,--output", expandOpt.output, "output file (default: standard output)");
+  expand->add_option("--setup", expandOpt.setup, "machine setup (JSON): offsets, tools, ...");
+  expand->add_flag("--provenance", expandOpt.provenance, "a source comment on each line");
+  addCommon(expand);
+
+  RunOptions runOpt;
+  std::string runFile;
+  CLI::App* run = app.add_subcommand("run", "execute a program on gcx's interpreter");
+  run->add_option("FILE", runFile, "program file")->required();
+  run->add_option("--setup", runOpt.setup, "machine setup (JSON): offsets, tools, ...");
+  run->add_option("--trace", runOpt.trace, "write the motion trace (JSON lines) to this file");
+  run->add_flag("--stats", runOpt.stats, "print path length, time and bounds");
+  addCommon(run);
+
+  PlotOptions plotOpt;
+  std::string plotFile;
+  CLI::App* plot = app.add_subcommand("plot", "draw the tool path as SVG");
+  plot->add_option("FILE", plotFile, "program file")->required();
+  plot->add_option("-o,--output", plotOpt.output, "SVG file")->required();
+  plot->add_option("--setup", plotOpt.setup, "machine setup (JSON): offsets, tools, ...");
+  plot->add_option("--view", plotOpt.view, "xy, xz, yz or iso")
+      ->check(CLI::IsMember({"xy", "xz", "yz", "iso"}));
+  addCommon(plot);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -52,5 +82,17 @@ int main(int argc, char** argv) {
   if (check->parsed()) return runCheck(checkFiles, common);
   if (fmt->parsed()) return runFmt(fmtFile, fmtOut, common);
   if (dump->parsed()) return runDumpIr(dumpFile, common);
+  if (expand->parsed()) {
+    expandOpt.common = common;
+    return runExpand(expandFile, expandOpt);
+  }
+  if (run->parsed()) {
+    runOpt.common = common;
+    return runRun(runFile, runOpt);
+  }
+  if (plot->parsed()) {
+    plotOpt.common = common;
+    return runPlot(plotFile, plotOpt);
+  }
   return UsageError;
 }

@@ -42,4 +42,26 @@ inline constexpr const char* SignAlias = "GCXW01";
 inline constexpr const char* SkipLevelNine = "GCXW02";
 inline constexpr const char* StrayParen = "GCXW03";
 
+// --- machine: alarms the manual numbers (nct.md §3)
+inline constexpr const char* MirrorWithTransform = "2001";
+inline constexpr const char* ArcRadiusMismatch = "2012";
+inline constexpr const char* ArcDefinition = "2015";
+// --- gcx: execution
+inline constexpr const char* NotImplemented = "GCX030";
+inline constexpr const char* UnknownGCodeAtRun = "GCX031";
+inline constexpr const char* MCodeWithoutMotion = "GCX032";
+inline constexpr const char* UnequalArcScaling = "GCX033";
+inline constexpr const char* TransformNesting = "GCX034";
+inline constexpr const char* DwellWithoutP = "GCX035";
+inline constexpr const char* ExpressionNotExpanded = "GCX036";
+inline constexpr const char* ArcZeroRadius = "GCX037";
+inline constexpr const char* EndWithoutM30 = "GCX038";
+
+// --- gcx: setup file (--setup FILE, src/machine/setup)
+inline constexpr const char* SetupNotJson = "GCX020";
+inline constexpr const char* SetupUnknownKey = "GCX021";
+inline constexpr const char* SetupWrongType = "GCX022";
+inline constexpr const char* SetupBadValue = "GCX023";
+inline constexpr const char* SetupCannotRead = "GCX024";
+
 } // namespace gcx::diag::code

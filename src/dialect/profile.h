@@ -28,10 +28,74 @@ struct AddressSpec {
   const char* meaning = "";
 };
 
+/// What a G code does, independent of its number in a dialect. The interpreter executes
+/// actions; each dialect's table maps its codes onto them.
+enum class GAction : unsigned char {
+  Unsupported, // known to the dialect, not executable by gcx yet (reported, never ignored)
+  Rapid,
+  Linear,
+  ArcCW,
+  ArcCCW,
+  Dwell,
+  ExactStopOnce,
+  DataInput,
+  DataInputEnd,
+  PlaneXY,
+  PlaneZX,
+  PlaneYZ,
+  Inch,
+  Metric,
+  Absolute,
+  Incremental,
+  FeedPerMinute,
+  FeedPerRevolution,
+  ReferenceReturn,
+  OtherReferenceReturn,
+  MachineCoordinates,
+  LocalCoordinates,
+  SetCoordinates,
+  WorkOffset,         // arg = 1..6 (G54..G59)
+  ExtendedWorkOffset, // G54.1 P
+  LengthPlus,
+  LengthMinus,
+  LengthCancel,
+  RadiusCompOff,
+  RadiusCompLeft,
+  RadiusCompRight,
+  ScaleOff,
+  ScaleOn,
+  MirrorOff,
+  MirrorOn,
+  RotateOn,
+  RotateOff,
+  PolarOff,
+  PolarOn,
+  ExactStopMode,
+  CornerOverride,
+  TappingMode,
+  ContinuousMode,
+  CycleCancel,
+  DrillCycle,
+  TurningCycle,
+  ReturnInitial,
+  ReturnR,
+  MacroCall,
+  ModalMacroCall,
+  ModalMacroCallEveryBlock,
+  ModalMacroCancel,
+  SurfaceSpeedOn,
+  SurfaceSpeedOff,
+  StrokeLimitOn,
+  StrokeLimitOff,
+  Modeless, // state the motion model does not depend on (polar interpolation off...)
+};
+
 struct GCodeSpec {
   int code10 = 0; // G code times ten: G84.2 -> 842
   int group = 0;  // modal group, 0 = one-shot
   const char* meaning = "";
+  GAction action = GAction::Unsupported;
+  int arg = 0;
 };
 
 struct Profile {
@@ -42,9 +106,13 @@ struct Profile {
   std::vector<int> exclusiveMCodes; // at most one of these per block (spindle M3 M4 M5 M19)
   int maxSignificantDigits = 15;
   int maxSkipLevel = 9;
-  int documentedSkipLevel = 8;        // levels above it are accepted with a warning
-  std::vector<int> dataModeLCodes;    // G10 L<n> starts a data-entry section ended by G11
-  std::vector<int> macroCallGCodes10; // G65, G66, G66.1: every other letter is an argument
+  int documentedSkipLevel = 8;          // levels above it are accepted with a warning
+  std::vector<int> dataModeLCodes;      // G10 L<n> starts a data-entry section ended by G11
+  std::vector<int> macroCallGCodes10;   // G65, G66, G66.1: every other letter is an argument
+  std::vector<int> powerOnGCodes10;     // modal state at power-on and after reset
+  std::vector<int> spindleOrientMCodes; // M19
+  bool uvwIncremental = false;          // U V W are incremental X Y Z when not axes
+  double arcRadiusTolerance = 0.01;     // |r_end - r_start| accepted (as a spiral) without alarm
   /// Static check of a macro call block's arguments (the dialect's argument specification).
   std::function<void(const ir::Block&, diag::Engine&)> checkCallArguments;
 

@@ -1,0 +1,54 @@
+// Runs a program through the interpreter into a motion sink: what expand, run and plot share.
+#pragma once
+#include <optional>
+
+#include "cli/session.h"
+#include "machine/setup.h"
+#include "motion/event.h"
+
+namespace gcx::cli {
+
+/// Opens the program and loads --setup (defaults when empty) for a command that executes it.
+/// Returns 0, or the exit code after reporting the problem.
+int openWithSetup(Session& s, const std::string& file, const std::string& setupPath,
+                  machine::Setup& setup);
+
+/// Static checks and execution, block by block; stops at the first error. True if the whole
+/// program ran without error.
+bool executeProgram(Session& s, const machine::Setup& setup, motion::Sink& sink);
+
+/// Writes through a temporary file that replaces `path` only on success (never a partial file);
+/// an empty path means standard output.
+class AtomicOutput {
+public:
+  explicit AtomicOutput(std::string path);
+  ~AtomicOutput();
+  std::ostream& stream() { return out_; }
+  bool ok() const { return static_cast<bool>(out_); }
+  /// Moves the result into place; false (with a message) on failure.
+  bool commit();
+
+private:
+  std::string path_, tmp_;
+  std::ofstream out_;
+  bool done_ = false;
+};
+
+/// A sink that hands every event to several sinks.
+class Tee : public motion::Sink {
+public:
+  void add(motion::Sink& s) { sinks_.push_back(&s); }
+  void event(const motion::Event& e) override {
+    for (motion::Sink* s : sinks_)
+      s->event(e);
+  }
+  void finish() override {
+    for (motion::Sink* s : sinks_)
+      s->finish();
+  }
+
+private:
+  std::vector<motion::Sink*> sinks_;
+};
+
+} // namespace gcx::cli

@@ -1,0 +1,42 @@
+// Canonical motion as RS274/NGC text (`gcx expand --to canonical`): G0 G1 G2 G3 G4, F, S,
+// M3/M4/M5, T M6, coolant, stops. Coordinates are the machine-frame gauge point, metric,
+// absolute: work offsets, G52/G92 shifts, tool lengths and programmable transformations are
+// baked into them, so LinuxCNC's rs274 run with zero offsets and no G43 reproduces the path
+// exactly (docs/canonical.md). Spirals, which RS274/NGC cannot express, are written as lines
+// within the chord tolerance.
+#pragma once
+#include <functional>
+#include <ostream>
+#include <string>
+
+#include "motion/event.h"
+
+namespace gcx::emit {
+
+struct CanonicalOptions {
+  bool provenance = false;      // a `(file:line)` comment on each line from a new source block
+  double chordTolerance = 1e-3; // mm, for spirals
+  std::function<std::string(FileId)> fileName;
+};
+
+class CanonicalEmitter : public motion::Sink {
+public:
+  CanonicalEmitter(std::ostream& out, CanonicalOptions opt = {});
+  void event(const motion::Event& e) override;
+  void finish() override;
+
+private:
+  void line(std::string text, const motion::Event& e);
+  void feedMode(const motion::Event& e);
+  void straight(const motion::Event& e, const char* code, const motion::Vec3& to, bool withFeed);
+
+  std::ostream& out_;
+  CanonicalOptions opt_;
+  bool headerDone_ = false;
+  bool perRevolution_ = false;
+  motion::Plane plane_ = motion::Plane::XY;
+  double spindleSpeed_ = 0;
+  SourceLoc lastSource_;
+};
+
+} // namespace gcx::emit

@@ -1,0 +1,98 @@
+#include "machine/block_words.h"
+
+namespace gcx::machine {
+
+bool BlockWords::hasAxisWord() const {
+  for (int i = 0; i < 3; ++i)
+    if (axis[i] || uvw[i]) return true;
+  return false;
+}
+
+const ir::Word* BlockWords::findAction(GAction a) const {
+  for (std::size_t i = 0; i < gCodes.size(); ++i)
+    if (gCodes[i] && gCodes[i]->action == a) return gWords[i];
+  return nullptr;
+}
+
+const ir::Word* sortWords(const ir::Block& b, const Profile& profile, BlockWords& out) {
+  out = BlockWords{};
+  for (const ir::Word& w : b.words) {
+    if (w.kind != ir::ValueKind::Number && w.kind != ir::ValueKind::Path) return &w;
+    if (w.address.size() != 1) {
+      out.other.push_back(&w);
+      continue;
+    }
+    switch (w.address[0]) {
+    case 'G':
+      out.gWords.push_back(&w);
+      out.gCodes.push_back(profile.gcode(w.number));
+      break;
+    case 'X':
+      out.axis[0] = &w;
+      break;
+    case 'Y':
+      out.axis[1] = &w;
+      break;
+    case 'Z':
+      out.axis[2] = &w;
+      break;
+    case 'U':
+      out.uvw[0] = &w;
+      break;
+    case 'V':
+      out.uvw[1] = &w;
+      break;
+    case 'W':
+      out.uvw[2] = &w;
+      break;
+    case 'I':
+      out.ijk[0] = &w;
+      break;
+    case 'J':
+      out.ijk[1] = &w;
+      break;
+    case 'K':
+      out.ijk[2] = &w;
+      break;
+    case 'R':
+      out.r = &w;
+      break;
+    case 'F':
+      out.f = &w;
+      break;
+    case 'S':
+      out.s = &w;
+      break;
+    case 'T':
+      out.t = &w;
+      break;
+    case 'H':
+      out.h = &w;
+      break;
+    case 'D':
+      out.d = &w;
+      break;
+    case 'P':
+      out.p = &w;
+      break;
+    case 'Q':
+      out.q = &w;
+      break;
+    case 'L':
+      out.l = &w;
+      break;
+    case 'E':
+      out.e = &w;
+      break;
+    case 'M':
+      out.m.push_back(&w);
+      break;
+    default:
+      out.other.push_back(&w);
+      break;
+    }
+  }
+  return nullptr;
+}
+
+} // namespace gcx::machine

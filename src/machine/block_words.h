@@ -1,0 +1,32 @@
+// The words of one block sorted by role, with their values converted to numbers: what the
+// interpreter reads. Only literal words reach it (the macro pass evaluates expressions).
+#pragma once
+#include <array>
+#include <vector>
+
+#include "dialect/profile.h"
+#include "ir/block.h"
+
+namespace gcx::machine {
+
+struct BlockWords {
+  std::vector<const ir::Word*> gWords;
+  std::vector<const GCodeSpec*> gCodes;  // parallel to gWords; null when not in the table
+  std::array<const ir::Word*, 3> axis{}; // X Y Z
+  std::array<const ir::Word*, 3> uvw{};  // U V W
+  std::array<const ir::Word*, 3> ijk{};  // I J K
+  const ir::Word *r = nullptr, *f = nullptr, *s = nullptr, *t = nullptr, *h = nullptr, *d = nullptr,
+                 *p = nullptr, *q = nullptr, *l = nullptr, *e = nullptr;
+  std::vector<const ir::Word*> m;
+  std::vector<const ir::Word*> other; // rotary axes, ,C ,R ,A, AX, <file>, O, N words
+
+  bool hasAxisWord() const;
+  /// The G code of this block with the given action, or null.
+  const ir::Word* findAction(GAction a) const;
+  bool has(GAction a) const { return findAction(a) != nullptr; }
+};
+
+/// Sorts the words; returns the first word that is not a literal (to be reported), or null.
+const ir::Word* sortWords(const ir::Block& b, const Profile& profile, BlockWords& out);
+
+} // namespace gcx::machine

@@ -1,0 +1,756 @@
+#include "machine/interpreter.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "diag/codes.h"
+#include "emit/number.h"
+#include "motion/geometry.h"
+
+namespace gcx::machine {
+
+using motion::Kind;
+using motion::Plane;
+
+namespace {
+
+std::string gName(const ir::Word& w) {
+  return std::string("G").append(emit::formatNumber(w.number));
+}
+
+} // namespace
+
+Interpreter::Interpreter(const Profile& profile, const Setup& setup, motion::Sink& sink,
+                         diag::Engine& diags)
+    : profile_(profile), setup_(setup), sink_(sink), diags_(diags) {
+  radiusTolerance_ = setup_.parameter("N1339", profile_.arcRadiusTolerance);
+  const auto& p = setup_.initialPosition;
+  machine_ = Vec3(p[0], p[1], p[2]);
+  const auto c = setup_.workOffset("common");
+  offsets_.common = Vec3(c[0], c[1], c[2]);
+  resetModal();
+  reexpress();
+}
+
+bool Interpreter::fail(const char* code, const SourceRange& where, std::string message) {
+  diag::Diagnostic d{diag::Severity::Error, code, std::move(message), where, {}};
+  for (auto it = from_.chain.rbegin(); it != from_.chain.rend(); ++it)
+    d.notes.push_back({SourceRange{it->call, 1}, "in " + it->what});
+  diags_.report(std::move(d));
+  return false;
+}
+
+void Interpreter::resetModal() {
+  const int tool = state_.tool, selected = state_.selectedTool;
+  const double speed = state_.spindleSpeed, feed = state_.feed;
+  const int direction = state_.spindleDirection;
+  state_ = ModalState{};
+  state_.tool = tool, state_.selectedTool = selected;
+  state_.spindleSpeed = speed, state_.spindleDirection = direction, state_.feed = feed;
+  for (int code : profile_.powerOnGCodes10)
+    for (const GCodeSpec& g : profile_.gcodes)
+      if (g.code10 == code) setModal(g);
+  offsets_.g92 = offsets_.g52 = Vec3::Zero();
+  offsets_.length = 0;
+  transforms_.clear();
+}
+
+Vec3 Interpreter::currentWorkOffset() const {
+  const std::string key = state_.workOffset > 100
+                              ? fmt::format("G54.1 P{}", state_.workOffset - 100)
+                              : fmt::format("G{}", 53 + state_.workOffset);
+  const auto o = setup_.workOffset(key);
+  return Vec3(o[0], o[1], o[2]);
+}
+
+Vec3 Interpreter::workOrigin() const {
+  return offsets_.common + currentWorkOffset() + offsets_.g92 + offsets_.g52 +
+         Vec3(0, 0, offsets_.length);
+}
+
+Vec3 Interpreter::toMachine(const Vec3& program) const {
+  return workOrigin() + transforms_.apply(program);
+}
+
+void Interpreter::reexpress() {
+  program_ = transforms_.applyInverse(machine_ - workOrigin());
+}
+
+void Interpreter::emit(motion::Event e) {
+  e.from = from_;
+  sink_.event(e);
+}
+
+void Interpreter::emitLine(Kind kind, const Vec3& to) {
+  if (to == machine_) return; // a zero-length block moves nothing (nct.md TV13 `G91 Z0`)
+  motion::Event e;
+  e.kind = kind;
+  e.start = machine_;
+  e.end = to;
+  e.feed = state_.feed;
+  e.perRevolution = state_.perRevolution;
+  machine_ = to;
+  emit(std::move(e));
+}
+
+bool Interpreter::execute(const ir::Block& block, const motion::Provenance& from) {
+  if (ended_) return false;
+  from_ = from;
+  blockRange_ = block.range;
+  if (block.kind == ir::BlockKind::ProgramStart) return true;
+  if (block.skipLevel && setup_.blockSkip.count(block.skipLevel)) return true; // nct.md §1.6
+  if (block.kind == ir::BlockKind::Data) return dataInput(BlockWords{}, block);
+  if (block.stmt)
+    return fail(diag::code::NotImplemented, block.stmt->range,
+                "macro statements need the macro expansion pass, which is not implemented yet");
+  BlockWords w;
+  if (const ir::Word* bad = sortWords(block, profile_, w))
+    return fail(diag::code::ExpressionNotExpanded, bad->range,
+                fmt::format("the value of {} is an expression; expressions are evaluated by the "
+                            "macro pass, which is not implemented yet",
+                            bad->address));
+  for (const ir::Word* o : w.other)
+    if (!o->is('N') && !o->is('O'))
+      return fail(diag::code::NotImplemented, o->range,
+                  fmt::format("address {} is not implemented yet", o->address));
+  if (!applyModal(w)) return false;
+  bool consumed = false;
+  if (!applyNonMotion(w, consumed)) return false;
+  const bool arcWithCentreOnly =
+      (state_.motion == GAction::ArcCW || state_.motion == GAction::ArcCCW) &&
+      (w.ijk[0] || w.ijk[1] || w.ijk[2]);
+  if (!consumed && (w.hasAxisWord() || arcWithCentreOnly))
+    if (!move(w)) return false;
+  return afterMotion(w);
+}
+
+bool Interpreter::setModal(const GCodeSpec& g) {
+  switch (g.action) {
+  case GAction::Rapid:
+  case GAction::Linear:
+  case GAction::ArcCW:
+  case GAction::ArcCCW:
+    state_.motion = g.action;
+    return true;
+  case GAction::PlaneXY:
+    state_.plane = Plane::XY;
+    return true;
+  case GAction::PlaneZX:
+    state_.plane = Plane::ZX;
+    return true;
+  case GAction::PlaneYZ:
+    state_.plane = Plane::YZ;
+    return true;
+  case GAction::Inch:
+    state_.inch = true;
+    return true;
+  case GAction::Metric:
+    state_.inch = false;
+    return true;
+  case GAction::Absolute:
+    state_.incremental = false;
+    return true;
+  case GAction::Incremental:
+    state_.incremental = true;
+    return true;
+  case GAction::FeedPerMinute:
+    state_.perRevolution = false;
+    return true;
+  case GAction::FeedPerRevolution:
+    state_.perRevolution = true;
+    return true;
+  case GAction::PolarOn:
+    state_.polar = true;
+    return true;
+  case GAction::PolarOff:
+    state_.polar = false;
+    return true;
+  case GAction::ExactStopMode:
+  case GAction::CornerOverride:
+  case GAction::TappingMode:
+  case GAction::ContinuousMode:
+    state_.feedControl = g.action;
+    return true;
+  case GAction::CycleCancel:
+    state_.cycle = GAction::CycleCancel;
+    return true;
+  case GAction::RadiusCompOff:
+    state_.radiusComp = g.action;
+    return true;
+  case GAction::WorkOffset:
+    state_.workOffset = g.arg;
+    return true;
+  // recorded by the control, without effect on the motion model
+  case GAction::ReturnInitial:
+  case GAction::ReturnR:
+  case GAction::SurfaceSpeedOff:
+  case GAction::StrokeLimitOff:
+  case GAction::ModalMacroCancel:
+  case GAction::Modeless:
+  case GAction::ExactStopOnce:
+    return true;
+  default:
+    return false;
+  }
+}
+
+bool Interpreter::applyModal(const BlockWords& w) {
+  for (std::size_t i = 0; i < w.gWords.size(); ++i) {
+    const ir::Word& word = *w.gWords[i];
+    const GCodeSpec* g = w.gCodes[i];
+    if (!g)
+      return fail(diag::code::UnknownGCodeAtRun, word.range,
+                  fmt::format("{} is not a G code of the {} dialect and is not configured as a "
+                              "macro call",
+                              gName(word), profile_.name));
+    if (setModal(*g)) {
+      if (g->action == GAction::WorkOffset) reexpress();
+      continue;
+    }
+    switch (g->action) {
+
+    case GAction::ExtendedWorkOffset: {
+      if (!w.p || w.p->number < 1 || w.p->number > 99 || w.p->number != std::floor(w.p->number))
+        return fail(diag::code::MissingData, word.range, "G54.1 needs P1 to P99");
+      state_.workOffset = 100 + static_cast<int>(w.p->number);
+      reexpress();
+      break;
+    }
+    case GAction::LengthPlus:
+    case GAction::LengthMinus:
+    case GAction::LengthCancel:
+    case GAction::RotateOn:
+    case GAction::RotateOff:
+    case GAction::ScaleOn:
+    case GAction::ScaleOff:
+    case GAction::MirrorOn:
+    case GAction::MirrorOff:
+    case GAction::Dwell:
+    case GAction::DataInput:
+    case GAction::DataInputEnd:
+    case GAction::SetCoordinates:
+    case GAction::LocalCoordinates:
+    case GAction::MachineCoordinates:
+    case GAction::ReferenceReturn:
+    case GAction::OtherReferenceReturn:
+      break; // applyNonMotion
+    default:
+      return fail(diag::code::NotImplemented, word.range,
+                  fmt::format("{} ({}) is not implemented yet", gName(word), g->meaning));
+    }
+  }
+  if (w.f) state_.feed = mm(w.f->number);
+  // length compensation: a coordinate transformation, never a move of its own (nct.md §3.16)
+  const ir::Word* lengthCode = nullptr;
+  for (GAction a : {GAction::LengthPlus, GAction::LengthMinus, GAction::LengthCancel})
+    if (const ir::Word* x = w.findAction(a)) lengthCode = x;
+  if (lengthCode || (w.h && state_.lengthSign != 0)) {
+    if (lengthCode) {
+      const GCodeSpec* g = profile_.gcode(lengthCode->number);
+      state_.lengthSign = g->action == GAction::LengthPlus    ? 1
+                          : g->action == GAction::LengthMinus ? -1
+                                                              : 0;
+    }
+    if (w.h) state_.lengthRegister = static_cast<int>(w.h->number);
+    double length = 0;
+    if (state_.lengthSign != 0) {
+      auto it = setup_.tools.find(state_.lengthRegister);
+      length = state_.lengthSign * (it == setup_.tools.end() ? 0.0 : it->second.length);
+    }
+    offsets_.length = length;
+    reexpress();
+  }
+  return transforms(w);
+}
+
+bool Interpreter::transforms(const BlockWords& w) {
+  const motion::PlaneAxes ax = motion::axesOf(state_.plane);
+  auto centre = [&](bool allAxes) {
+    Vec3 c = program_;
+    for (int a = 0; a < 3; ++a) {
+      if (!allAxes && a != ax.first && a != ax.second) continue;
+      if (const ir::Word* x = w.axis[a]) {
+        const double v = mm(x->number);
+        c[a] = (state_.incremental || x->incremental) ? program_[a] + v : v;
+      }
+    }
+    return c;
+  };
+  if (const ir::Word* g = w.findAction(GAction::MirrorOn)) {
+    if (transforms_.rotating() || transforms_.scaling())
+      return fail(diag::code::MirrorWithTransform, g->range,
+                  "mirror may only be switched on in G50 G69 state (nct.md §3.15)");
+    unsigned mask = 0;
+    for (int a = 0; a < 3; ++a)
+      if (w.axis[a]) mask |= 1u << a;
+    transforms_.mirror(mask, centre(true));
+  }
+  if (const ir::Word* g = w.findAction(GAction::MirrorOff)) {
+    if (transforms_.rotating() || transforms_.scaling())
+      return fail(diag::code::MirrorWithTransform, g->range,
+                  "mirror may only be switched off in G50 G69 state (nct.md §3.15)");
+    unsigned mask = 0;
+    for (int a = 0; a < 3; ++a)
+      if (w.axis[a]) mask |= 1u << a;
+    transforms_.cancelMirror(mask ? mask : 7u);
+  }
+  if (const ir::Word* g = w.findAction(GAction::RotateOff)) {
+    if (transforms_.rotating() && transforms_.innermost() != Transforms::Kind::Rotate)
+      return fail(diag::code::TransformNesting, g->range,
+                  "G69 while G51 switched on after G68 is still active: switch-offs must nest "
+                  "(nct.md §3.15)");
+    transforms_.cancel(Transforms::Kind::Rotate);
+  }
+  if (const ir::Word* g = w.findAction(GAction::ScaleOff)) {
+    if (transforms_.scaling() && transforms_.innermost() != Transforms::Kind::Scale)
+      return fail(diag::code::TransformNesting, g->range,
+                  "G50 while G68 switched on after G51 is still active: switch-offs must nest "
+                  "(nct.md §3.15)");
+    transforms_.cancel(Transforms::Kind::Scale);
+  }
+  if (const ir::Word* g = w.findAction(GAction::ScaleOn)) {
+    Vec3 factors(1, 1, 1);
+    if (w.p) {
+      factors = Vec3::Constant(w.p->number);
+    } else {
+      for (int a = 0; a < 3; ++a)
+        if (w.ijk[a]) factors[a] = w.ijk[a]->number;
+      if (!w.ijk[0] && !w.ijk[1] && !w.ijk[2])
+        diags_.warning(diag::code::MissingData, g->range,
+                       "G51 without P or I/J/K: scaling factor 1 (nct.md Q18)");
+    }
+    transforms_.scale(centre(true), factors);
+  }
+  if (const ir::Word* g = w.findAction(GAction::RotateOn)) {
+    double angle = 0;
+    if (w.r) {
+      angle = w.r->number;
+      if (state_.incremental || w.r->incremental) angle += transforms_.rotationDegrees();
+    } else {
+      diags_.warning(diag::code::MissingData, g->range, "G68 without R: angle 0 (nct.md Q18)");
+    }
+    transforms_.rotate(state_.plane, centre(false), angle);
+  }
+  return true;
+}
+
+bool Interpreter::applyNonMotion(const BlockWords& w, bool& consumed) {
+  consumed = w.has(GAction::RotateOn) || w.has(GAction::ScaleOn) || w.has(GAction::MirrorOn) ||
+             w.has(GAction::MirrorOff);
+  if (const ir::Word* g = w.findAction(GAction::Dwell)) {
+    consumed = true;
+    if (w.axis[0])
+      return fail(diag::code::DwellWithoutP, w.axis[0]->range,
+                  "G4 takes P (seconds, or revolutions in G95); X is not defined in NCT (Q37)");
+    if (!w.p) return fail(diag::code::MissingData, g->range, "G4 without P");
+    motion::Event e;
+    e.kind = Kind::Dwell;
+    e.start = e.end = machine_;
+    e.value = w.p->number;
+    e.perRevolution = state_.perRevolution && setup_.parameter("N1337.SEC", 0) == 0;
+    emit(std::move(e));
+  }
+  if (w.has(GAction::DataInput)) {
+    consumed = true;
+    return dataInput(w, ir::Block{});
+  }
+  if (w.has(GAction::DataInputEnd)) dataMode_ = false;
+  if (const ir::Word* g = w.findAction(GAction::SetCoordinates)) {
+    consumed = true;
+    if (w.s)
+      return fail(diag::code::NotImplemented, g->range,
+                  "G92 S (spindle clamp) is not implemented yet");
+    return setCoordinates(w);
+  }
+  if (w.has(GAction::LocalCoordinates)) {
+    consumed = true;
+    return localCoordinates(w);
+  }
+  if (w.has(GAction::MachineCoordinates)) {
+    consumed = true;
+    return machineMove(w);
+  }
+  if (w.has(GAction::ReferenceReturn)) {
+    consumed = true;
+    return referenceReturn(w, 1);
+  }
+  if (const ir::Word* g = w.findAction(GAction::OtherReferenceReturn)) {
+    consumed = true;
+    if (!w.p || w.p->number < 1 || w.p->number > 4 || w.p->number != std::floor(w.p->number))
+      return fail(diag::code::MissingData, g->range,
+                  "G30 needs P1 to P4 to name the reference point (nct.md Q15)");
+    return referenceReturn(w, static_cast<int>(w.p->number));
+  }
+  return true;
+}
+
+bool Interpreter::setCoordinates(const BlockWords& w) {
+  // the current tool tip gets the coordinates v in every work system (nct.md §3.14)
+  const Vec3 local = machine_ - offsets_.common - currentWorkOffset() - Vec3(0, 0, offsets_.length);
+  for (int a = 0; a < 3; ++a) {
+    if (w.uvw[a])
+      return fail(diag::code::IllegalIncremental, w.uvw[a]->range,
+                  "G92 takes absolute coordinates only");
+    if (!w.axis[a]) continue;
+    offsets_.g52[a] = 0; // G92 cancels G52 on the axes it names
+    offsets_.g92[a] = local[a] - mm(w.axis[a]->number);
+  }
+  reexpress();
+  return true;
+}
+
+bool Interpreter::localCoordinates(const BlockWords& w) {
+  for (int a = 0; a < 3; ++a) {
+    const ir::Word* x = w.axis[a] ? w.axis[a] : w.uvw[a];
+    if (!x) continue;
+    const double v = mm(x->number);
+    const bool inc = state_.incremental || x->incremental || x == w.uvw[a];
+    offsets_.g52[a] = inc ? offsets_.g52[a] + v : v;
+  }
+  reexpress();
+  return true;
+}
+
+bool Interpreter::machineMove(const BlockWords& w) {
+  Vec3 to = machine_;
+  for (int a = 0; a < 3; ++a) {
+    if (w.uvw[a] || (w.axis[a] && w.axis[a]->incremental))
+      return fail(diag::code::IllegalIncremental, (w.uvw[a] ? w.uvw[a] : w.axis[a])->range,
+                  "illegal incremental movement: G53 takes machine coordinates (nct.md §3.13)");
+    if (w.axis[a]) to[a] = mm(w.axis[a]->number);
+  }
+  if (to != machine_) emitLine(Kind::Rapid, to);
+  reexpress();
+  return true;
+}
+
+bool Interpreter::referenceReturn(const BlockWords& w, int point) {
+  if (!w.hasAxisWord()) return true;
+  // phase 1: rapid to the intermediate point in the current work system (never polar)
+  const Vec3 via = target(w, false);
+  const Vec3 viaMachine = toMachine(via);
+  if (viaMachine != machine_) emitLine(Kind::Rapid, viaMachine);
+  // phase 2: the named axes to the reference point (machine coordinates)
+  auto it = setup_.referencePoints.find(point);
+  const std::array<double, 3> ref =
+      it == setup_.referencePoints.end() ? std::array<double, 3>{0, 0, 0} : it->second;
+  Vec3 to = machine_;
+  for (int a = 0; a < 3; ++a)
+    if (axisGiven(w, a)) to[a] = ref[a];
+  if (to != machine_) emitLine(Kind::Rapid, to);
+  reexpress();
+  return true;
+}
+
+bool Interpreter::dataInput(const BlockWords& w, const ir::Block& dataBlock) {
+  if (dataBlock.kind == ir::BlockKind::Data) {
+    // G10 L52 parameter record N<id> [P] [Q<bit>] R<value> (nct-macro.md §9.1)
+    if (!dataBlock.sequence) return true;
+    const ir::Word* r = dataBlock.find('R');
+    if (!r || r->kind != ir::ValueKind::Number) return true;
+    std::string key = fmt::format("N{:04}", *dataBlock.sequence);
+    if (const ir::Word* q = dataBlock.find('Q')) key += fmt::format(".{}", q->number);
+    const double old = setup_.parameter(key, 0);
+    setup_.parameters[key] = r->incremental ? old + r->number : r->number;
+    if (key == "N1339") radiusTolerance_ = setup_.parameters[key];
+    return true;
+  }
+  const ir::Word* g = w.findAction(GAction::DataInput);
+  const int l = w.l ? static_cast<int>(w.l->number) : -1;
+  if (l == 52 || l == 75 || l == 76 || l == 77) {
+    dataMode_ = true;
+    return true;
+  }
+  const bool add = state_.incremental;
+  if (l == 2 || l == 20) { // work offsets (nct.md §3.14)
+    if (!w.p) return fail(diag::code::MissingData, g->range, "G10 L2/L20 needs P");
+    for (int a = 0; a < 3; ++a)
+      if (w.ijk[a])
+        return fail(diag::code::NotImplemented, w.ijk[a]->range,
+                    "basic rotation of a work offset (G10 L2 I J K) is not implemented yet");
+    const int p = static_cast<int>(w.p->number);
+    std::string key;
+    if (l == 2 && p == 0)
+      key = "common";
+    else if (l == 2 && p >= 1 && p <= 6)
+      key = fmt::format("G{}", 53 + p);
+    else if (l == 20 && p >= 1 && p <= 99)
+      key = fmt::format("G54.1 P{}", p);
+    else
+      return fail(diag::code::DataOutOfRange, w.p->range, "G10 offset number out of range");
+    auto value = setup_.workOffset(key);
+    for (int a = 0; a < 3; ++a)
+      if (w.axis[a]) {
+        const double v = mm(w.axis[a]->number);
+        value[a] = (add || w.axis[a]->incremental) ? value[a] + v : v;
+      }
+    setup_.workOffsets[key] = value;
+    if (key == "common") offsets_.common = Vec3(value[0], value[1], value[2]);
+    reexpress();
+    return true;
+  }
+  if (l == 10 || l == 11) { // length geometry / wear: gcx keeps their sum per register
+    if (!w.p || !w.r) return fail(diag::code::MissingData, g->range, "G10 L10/L11 needs P and R");
+    ToolData& t = setup_.tools[static_cast<int>(w.p->number)];
+    const double v = mm(w.r->number);
+    if (add || w.r->incremental)
+      t.length += v;
+    else if (l == 10)
+      t.length = v + wear_[static_cast<int>(w.p->number)];
+    else {
+      t.length += v - wear_[static_cast<int>(w.p->number)];
+      wear_[static_cast<int>(w.p->number)] = v;
+    }
+    return true;
+  }
+  return fail(diag::code::NotImplemented, g->range,
+              fmt::format("G10 L{} is not implemented yet", l));
+}
+
+Vec3 Interpreter::target(const BlockWords& w, bool allowPolar) const {
+  Vec3 t = program_;
+  for (int a = 0; a < 3; ++a) {
+    if (const ir::Word* x = w.axis[a]) {
+      const double v = mm(x->number);
+      t[a] = (state_.incremental || x->incremental) ? program_[a] + v : v;
+    }
+    if (const ir::Word* u = w.uvw[a]) t[a] += mm(u->number); // U V W: incremental aliases
+  }
+  if (!allowPolar || !state_.polar) return t;
+  // polar input (nct.md §3.9): first plane axis = radius, second = angle in degrees
+  const motion::PlaneAxes ax = motion::axesOf(state_.plane);
+  const double c1 = program_[ax.first], c2 = program_[ax.second];
+  const ir::Word* rw = w.axis[ax.first] ? w.axis[ax.first] : w.uvw[ax.first];
+  const ir::Word* aw = w.axis[ax.second] ? w.axis[ax.second] : w.uvw[ax.second];
+  if (!rw && !aw) return t;
+  const double currentAngle = std::atan2(c2, c1);
+  double angle = currentAngle;
+  if (aw) {
+    const double v = aw->number * M_PI / 180.0;
+    const bool inc = state_.incremental || aw->incremental || aw == w.uvw[ax.second];
+    angle = inc ? currentAngle + v : v;
+  }
+  double p1, p2;
+  if (rw && (state_.incremental || rw->incremental || rw == w.uvw[ax.first])) {
+    const double d = mm(rw->number); // travel from the start point in the direction `angle`
+    p1 = c1 + d * std::cos(angle);
+    p2 = c2 + d * std::sin(angle);
+  } else {
+    const double r = rw ? mm(rw->number) : std::hypot(c1, c2);
+    p1 = r * std::cos(angle);
+    p2 = r * std::sin(angle);
+  }
+  t[ax.first] = p1;
+  t[ax.second] = p2;
+  return t;
+}
+
+bool Interpreter::move(const BlockWords& w) {
+  if (state_.cycle != GAction::CycleCancel)
+    return fail(diag::code::NotImplemented, blockRange_, "canned cycles are not implemented yet");
+  const Vec3 to = target(w, true);
+  switch (state_.motion) {
+  case GAction::Rapid:
+    emitLine(Kind::Rapid, toMachine(to));
+    program_ = to;
+    return true;
+  case GAction::Linear:
+    if (state_.feed <= 0)
+      return fail(diag::code::MissingData, blockRange_, "linear move without a feed rate F");
+    emitLine(Kind::Feed, toMachine(to));
+    program_ = to;
+    return true;
+  case GAction::ArcCW:
+  case GAction::ArcCCW: {
+    const motion::PlaneAxes ax = motion::axesOf(state_.plane);
+    return arc(w, to, axisGiven(w, ax.first) || axisGiven(w, ax.second));
+  }
+  default:
+    return fail(diag::code::NotImplemented, blockRange_, "motion mode not implemented yet");
+  }
+}
+
+bool Interpreter::arc(const BlockWords& w, const Vec3& end, bool haveInPlaneEnd) {
+  const motion::PlaneAxes ax = motion::axesOf(state_.plane);
+  const bool cw = state_.motion == GAction::ArcCW;
+  const SourceRange& at = blockRange_;
+  if (w.ijk[ax.normal])
+    return fail(
+        diag::code::ArcDefinition, w.ijk[ax.normal]->range,
+        fmt::format("{} is outside the selected plane (nct.md §3.5)", w.ijk[ax.normal]->address));
+  const bool centreGiven = w.ijk[ax.first] || w.ijk[ax.second];
+  if (w.r && centreGiven)
+    return fail(diag::code::ArcDefinition, w.r->range,
+                "both R and I/J/K in one arc block (nct.md Q20)");
+  if (!w.r && !centreGiven)
+    return fail(diag::code::ArcDefinition, at, "arc without R or I/J/K (nct.md §3.5)");
+  int turns = 1;
+  if (w.l) {
+    if (w.l->number < 1 || w.l->number != std::floor(w.l->number))
+      return fail(diag::code::DataOutOfRange, w.l->range,
+                  "L of an arc counts started turns: 1 or more");
+    turns = static_cast<int>(w.l->number);
+  }
+  const Vec3 start = program_;
+  const double s1 = start[ax.first], s2 = start[ax.second];
+  const double e1 = end[ax.first], e2 = end[ax.second];
+  double c1, c2;
+  if (w.r) {
+    if (!haveInPlaneEnd) return true; // no motion, no alarm (000:1314-1318)
+    const double r = mm(w.r->number);
+    const double d1 = e1 - s1, d2 = e2 - s2, chord = std::hypot(d1, d2);
+    if (chord == 0) return true;
+    if (std::fabs(r) < chord / 2) {
+      // R below half the chord: R is the start radius, centre on the chord (000:1343-1365)
+      c1 = s1 + std::fabs(r) * d1 / chord;
+      c2 = s2 + std::fabs(r) * d2 / chord;
+    } else {
+      const double h = std::sqrt(r * r - chord * chord / 4);
+      // G3 with R>0 has its centre left of the chord, G2 right; R<0 (more than 180°) swaps
+      const double side = (cw ? -1.0 : 1.0) * (r < 0 ? -1.0 : 1.0);
+      c1 = (s1 + e1) / 2 - side * h * d2 / chord;
+      c2 = (s2 + e2) / 2 + side * h * d1 / chord;
+    }
+  } else {
+    c1 = s1 + (w.ijk[ax.first] ? mm(w.ijk[ax.first]->number) : 0.0);
+    c2 = s2 + (w.ijk[ax.second] ? mm(w.ijk[ax.second]->number) : 0.0);
+  }
+  const double r0 = std::hypot(s1 - c1, s2 - c2), r1 = std::hypot(e1 - c1, e2 - c2);
+  if (r0 < 1e-9) return fail(diag::code::ArcZeroRadius, at, "arc of radius 0");
+  if (!w.l && std::fabs(r1 - r0) > radiusTolerance_)
+    return fail(diag::code::ArcRadiusMismatch, at,
+                fmt::format("end point radius {} differs from start radius {} by more than "
+                            "{} (N1339 Radius Diff); program L for a spiral",
+                            emit::formatNumber(std::round(r1 * 1e4) / 1e4),
+                            emit::formatNumber(std::round(r0 * 1e4) / 1e4),
+                            emit::formatNumber(radiusTolerance_)));
+  if (state_.feed <= 0) return fail(diag::code::MissingData, at, "arc without a feed rate F");
+  // the transformed arc must stay a circle in its plane
+  const Eigen::Matrix3d m = transforms_.matrix().linear();
+  Eigen::Matrix2d a2;
+  a2 << m(ax.first, ax.first), m(ax.first, ax.second), m(ax.second, ax.first),
+      m(ax.second, ax.second);
+  const Eigen::Matrix2d g = a2.transpose() * a2;
+  const bool mixes =
+      std::fabs(m(ax.normal, ax.first)) > 1e-12 || std::fabs(m(ax.normal, ax.second)) > 1e-12 ||
+      std::fabs(m(ax.first, ax.normal)) > 1e-12 || std::fabs(m(ax.second, ax.normal)) > 1e-12;
+  if (mixes || std::fabs(g(0, 0) - g(1, 1)) > 1e-9 * g(0, 0) || std::fabs(g(0, 1)) > 1e-9 * g(0, 0))
+    return fail(diag::code::UnequalArcScaling, at,
+                "this arc is not a circle after scaling with unequal factors or a rotation out of "
+                "its plane; gcx does not expand it yet (nct.md Q19)");
+  const double k = std::sqrt(std::fabs(a2.determinant()));
+  const bool mirrored = a2.determinant() < 0;
+
+  Vec3 centre = start;
+  centre[ax.first] = c1;
+  centre[ax.second] = c2;
+  motion::Event e;
+  e.kind = Kind::Arc;
+  e.start = machine_;
+  e.end = toMachine(end);
+  e.center = toMachine(centre);
+  e.plane = state_.plane;
+  e.clockwise = cw != mirrored;
+  e.turns = turns - 1;
+  e.startRadius = r0 * k;
+  e.endRadius = r1 * k;
+  e.feed = state_.feed;
+  e.perRevolution = state_.perRevolution;
+  machine_ = e.end;
+  program_ = end;
+  emit(std::move(e));
+  return true;
+}
+
+bool Interpreter::afterMotion(const BlockWords& w) {
+  // M, S and T act after the motion of their block (nct.md §2.2)
+  if (w.t) state_.selectedTool = static_cast<int>(w.t->number);
+  bool spindleChanged = false;
+  if (w.s) {
+    state_.spindleSpeed = w.s->number;
+    spindleChanged = true;
+  }
+  for (const ir::Word* m : w.m) {
+    const int code = static_cast<int>(m->number);
+    switch (code) {
+    case 3:
+    case 4:
+    case 5:
+      state_.spindleDirection = code == 3 ? 1 : code == 4 ? -1 : 0;
+      spindleChanged = true;
+      break;
+    default:
+      break;
+    }
+  }
+  if (spindleChanged) {
+    motion::Event e;
+    e.kind = Kind::Spindle;
+    e.start = e.end = machine_;
+    e.value = state_.spindleSpeed;
+    e.direction = state_.spindleDirection;
+    emit(std::move(e));
+  }
+  for (const ir::Word* m : w.m) {
+    const int code = static_cast<int>(m->number);
+    motion::Event e;
+    e.start = e.end = machine_;
+    switch (code) {
+    case 3:
+    case 4:
+    case 5:
+      continue;
+    case 19:
+      e.kind = Kind::SpindleOrient;
+      break;
+    case 6:
+      state_.tool = state_.selectedTool;
+      e.kind = Kind::ToolChange;
+      e.value = state_.tool;
+      break;
+    case 7:
+    case 8:
+    case 9:
+      e.kind = Kind::Coolant;
+      e.value = code;
+      break;
+    case 0:
+    case 1:
+      e.kind = Kind::Stop;
+      e.optional = code == 1;
+      break;
+    case 2:
+    case 30:
+      e.kind = Kind::End;
+      e.value = code;
+      emit(std::move(e));
+      ended_ = true;
+      resetModal();
+      return false;
+    case 98:
+    case 99:
+      return fail(diag::code::NotImplemented, m->range,
+                  "subprogram calls need the expansion pass, which is not implemented yet");
+    default:
+      diags_.warning(diag::code::MCodeWithoutMotion, m->range,
+                     fmt::format("M{} has no meaning in the motion model; it is not carried into "
+                                 "the motion trace",
+                                 code));
+      continue;
+    }
+    emit(std::move(e));
+  }
+  return true;
+}
+
+void Interpreter::finish() {
+  if (ended_) return;
+  ended_ = true;
+  motion::Event e;
+  e.kind = Kind::End;
+  e.start = e.end = machine_;
+  e.text = "end of file";
+  emit(std::move(e));
+}
+
+} // namespace gcx::machine

@@ -1,0 +1,109 @@
+// The semantic engine: modal state, positions, offsets and transformations of one channel,
+// executing flat blocks (all word values literal) and emitting machine-frame motion events.
+// The macro pass (later) drives the same engine block by block, so system variables read the
+// true state; there is no second copy of any rule.
+#pragma once
+#include <array>
+#include <map>
+#include <optional>
+
+#include "diag/diagnostic.h"
+#include "dialect/profile.h"
+#include "ir/block.h"
+#include "machine/block_words.h"
+#include "machine/setup.h"
+#include "machine/transforms.h"
+#include "motion/event.h"
+
+namespace gcx::machine {
+
+/// The modal state a block inherits (nct.md §2.1 groups that affect motion).
+struct ModalState {
+  GAction motion = GAction::Rapid;
+  motion::Plane plane = motion::Plane::XY;
+  bool inch = false;
+  bool incremental = false;
+  bool perRevolution = false;
+  bool polar = false;
+  int workOffset = 1;     // 1..6 = G54..G59; 100 + p = G54.1 Pp
+  int lengthSign = 0;     // +1 G43, -1 G44, 0 G49
+  int lengthRegister = 0; // H
+  GAction radiusComp = GAction::RadiusCompOff;
+  GAction cycle = GAction::CycleCancel;
+  GAction feedControl = GAction::ContinuousMode;
+  double feed = 0; // mm/min or mm/rev
+  double spindleSpeed = 0;
+  int spindleDirection = 0; // +1 M3, -1 M4, 0 M5
+  int selectedTool = 0;     // T
+  int tool = 0;             // in the spindle after M6
+};
+
+class Interpreter {
+public:
+  Interpreter(const Profile& profile, const Setup& setup, motion::Sink& sink, diag::Engine& diags);
+
+  /// Executes one block. False when execution must stop: an alarm (reported) or program end.
+  bool execute(const ir::Block& block, const motion::Provenance& from);
+  /// The input ended; a program may end without M2/M30 (nct.md Q31).
+  void finish();
+
+  bool ended() const { return ended_; }
+  const ModalState& state() const { return state_; }
+  /// Last programmed point, untransformed, in the current work system (mm).
+  const Vec3& programPosition() const { return program_; }
+  /// Gauge point in the machine frame (mm).
+  const Vec3& machinePosition() const { return machine_; }
+
+private:
+  struct Offsets {
+    Vec3 common = Vec3::Zero();
+    Vec3 g92 = Vec3::Zero();
+    Vec3 g52 = Vec3::Zero();
+    double length = 0; // along Z (N1416 ZAX=1)
+  };
+
+  bool fail(const char* code, const SourceRange& where, std::string message);
+  double mm(double v) const { return state_.inch ? v * 25.4 : v; }
+  Vec3 workOrigin() const;                   // machine position of program zero (no transforms)
+  Vec3 toMachine(const Vec3& program) const; // full pipeline
+  void reexpress();                          // program position from the machine position
+  Vec3 currentWorkOffset() const;
+  void resetModal();
+
+  /// Applies a G code that only changes modal state; false if it needs more than that.
+  bool setModal(const GCodeSpec& g);
+  bool applyModal(const BlockWords& w);
+  bool applyNonMotion(const BlockWords& w, bool& consumedAxes);
+  bool move(const BlockWords& w);
+  bool arc(const BlockWords& w, const Vec3& target, bool haveInPlaneEnd);
+  bool afterMotion(const BlockWords& w);
+  /// Target of the axis words in program coordinates (G90/G91, I operator, U/V/W, polar).
+  Vec3 target(const BlockWords& w, bool allowPolar) const;
+  bool axisGiven(const BlockWords& w, int axis) const { return w.axis[axis] || w.uvw[axis]; }
+  bool setCoordinates(const BlockWords& w);
+  bool localCoordinates(const BlockWords& w);
+  bool dataInput(const BlockWords& w, const ir::Block& b);
+  bool referenceReturn(const BlockWords& w, int point);
+  bool machineMove(const BlockWords& w);
+  bool transforms(const BlockWords& w);
+  void emitLine(motion::Kind kind, const Vec3& to);
+  void emit(motion::Event e);
+
+  const Profile& profile_;
+  Setup setup_;
+  motion::Sink& sink_;
+  diag::Engine& diags_;
+  ModalState state_;
+  Offsets offsets_;
+  Transforms transforms_;
+  Vec3 program_ = Vec3::Zero();
+  Vec3 machine_ = Vec3::Zero();
+  double radiusTolerance_;
+  motion::Provenance from_;
+  SourceRange blockRange_;
+  std::map<int, double> wear_; // G10 L11 length wear per register
+  bool ended_ = false;
+  bool dataMode_ = false;
+};
+
+} // namespace gcx::machine

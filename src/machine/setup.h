@@ -1,0 +1,59 @@
+// The machine setup a program runs under (`--setup FILE`): work offsets, tool table, machine
+// parameters, preset macro variables, start position, block-skip switches, reference points.
+// A JSON file; every section is optional and a missing one means the nct.md §0.2 reference
+// profile (machine at 0,0,0, no offsets):
+//   {"work_offsets": {"G54": [x, y, z], "G54.1 P1": [x, y, z], "common": [x, y, z]},
+//    "tools": {"1": {"length": 101.6, "radius": 5}},
+//    "parameters": {"N1339": 0.01, "N0607.ORI": 1, "N1300.3": 1},
+//    "variables": {"#500": 1.5},
+//    "initial_position": [x, y, z],
+//    "block_skip": [1, 3],
+//    "reference_points": {"1": [x, y, z], "2": [x, y, z]},
+//    "rapid_rate": 10000}
+// Lengths in mm, positions in machine coordinates. `//` and `/* */` comments are allowed.
+#pragma once
+#include <array>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+
+#include "diag/diagnostic.h"
+#include "ir/source.h"
+
+namespace gcx::machine {
+
+struct ToolData {
+  double length = 0; // mm, offset register n = tool n
+  double radius = 0; // mm
+};
+
+struct Setup {
+  /// Machine coordinates of each work zero. Key as written: "G54".."G59", "G54.1 P1"..
+  /// "G54.1 P99", "common" (the G10 L2 P0 external shift added to all of them).
+  std::map<std::string, std::array<double, 3>> workOffsets;
+  std::map<int, ToolData> tools; // 0..999
+  /// Key normalised to "N" + 4 digits, bit part upper case: "N1339", "N0607.ORI", "N1300.3".
+  std::map<std::string, double> parameters;
+  std::map<int, double> variables; // #n -> value; n in 1..33 or 100..999
+  std::array<double, 3> initialPosition{0, 0, 0};
+  std::set<int> blockSkip; // switches that are ON, 1..9
+  /// G28/G30 reference points 1..4 in machine coordinates; all four are always present.
+  std::map<int, std::array<double, 3>> referencePoints{{1, {}}, {2, {}}, {3, {}}, {4, {}}};
+  double rapidRate = 10000; // mm/min, for time estimates
+
+  /// The offset stored under key ("G54", "G54.1 P7", "common"), zeros if absent.
+  std::array<double, 3> workOffset(const std::string& key) const;
+  /// The parameter's value, or fallback if the setup does not set it. key is normalised the
+  /// way the file's keys are, so "N607.ori" finds "N0607.ORI".
+  double parameter(const std::string& key, double fallback) const;
+};
+
+/// Reads a setup file; on any error reports located diagnostics (all of them, not only the
+/// first) and returns nullopt. An unreadable file is GCX024 without a location.
+std::optional<Setup> loadSetup(const std::string& path, SourceManager& sources,
+                               diag::Engine& diags);
+/// Parses setup text already registered as file (locations point into it).
+std::optional<Setup> parseSetup(const std::string& text, FileId file, diag::Engine& diags);
+
+} // namespace gcx::machine

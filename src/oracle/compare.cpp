@@ -1,0 +1,287 @@
+#include "oracle/compare.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace gcx::oracle {
+
+using motion::Event;
+using motion::Kind;
+using motion::Vec3;
+
+namespace {
+
+/// A normalised event: possibly several collinear input pieces merged.
+struct Item {
+  Event e;
+  std::size_t first = 0; // index range in the input list
+  std::size_t last = 0;
+  std::vector<Vec3> interior; // joints of merged pieces
+};
+
+double maxDiff(const Vec3& a, const Vec3& b) {
+  return (a - b).cwiseAbs().maxCoeff();
+}
+
+double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double len2 = ab.squaredNorm();
+  if (len2 == 0) return (p - a).norm();
+  const double t = std::clamp((p - a).dot(ab) / len2, 0.0, 1.0);
+  return (p - (a + t * ab)).norm();
+}
+
+bool sameFeed(const Event& a, const Event& b, const CompareOptions& o) {
+  if (!o.compareFeed) return true;
+  return a.perRevolution == b.perRevolution && std::abs(a.feed - b.feed) <= o.feedTolerance;
+}
+
+bool tryMerge(Item& it, const Event& e, const CompareOptions& o) {
+  if (e.kind != it.e.kind) return false;
+  if (e.kind == Kind::Feed ? !o.mergeCollinearFeeds
+                           : (e.kind != Kind::Rapid || !o.mergeCollinearRapids))
+    return false;
+  if (!sameFeed(it.e, e, o)) return false;
+  if (maxDiff(it.e.end, e.start) > o.tolerance) return false;
+  const Vec3 s = it.e.start, f = e.end;
+  const Vec3 dir = f - s;
+  if (dir.dot(it.e.end - it.e.start) <= 0 || dir.dot(e.end - e.start) <= 0) return false;
+  if (distanceToSegment(it.e.end, s, f) > o.tolerance) return false;
+  for (const Vec3& p : it.interior)
+    if (distanceToSegment(p, s, f) > o.tolerance) return false;
+  it.interior.push_back(it.e.end);
+  it.e.end = f;
+  return true;
+}
+
+std::vector<Item> normalise(const std::vector<Event>& in, const CompareOptions& o) {
+  std::vector<Item> out;
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const Event& e = in[i];
+    if (std::find(o.kinds.begin(), o.kinds.end(), e.kind) == o.kinds.end()) continue;
+    if (o.dropZeroLength && (e.kind == Kind::Rapid || e.kind == Kind::Feed) &&
+        maxDiff(e.start, e.end) <= o.tolerance)
+      continue;
+    if (!out.empty() && tryMerge(out.back(), e, o)) {
+      out.back().last = i;
+      continue;
+    }
+    out.push_back(Item{e, i, i, {}});
+  }
+  return out;
+}
+
+std::string fmtVec(const Vec3& v) {
+  auto z = [](double d) { return std::abs(d) < 5e-5 ? 0.0 : d; }; // no "-0.0000"
+  return fmt::format("({:.4f}, {:.4f}, {:.4f})", z(v.x()), z(v.y()), z(v.z()));
+}
+
+const char* planeName(motion::Plane p) {
+  switch (p) {
+  case motion::Plane::XY:
+    return "G17";
+  case motion::Plane::ZX:
+    return "G18";
+  case motion::Plane::YZ:
+    return "G19";
+  }
+  return "?";
+}
+
+std::string where(const Event& e, const SourceManager* sm) {
+  std::string s;
+  const SourceLoc& at = e.from.at;
+  if (sm != nullptr) {
+    s = sm->name(at.file);
+    if (at.valid()) {
+      s += fmt::format(":{}", at.line);
+      if (at.col != 0) s += fmt::format(":{}", at.col);
+      std::string text = sm->lineText(at, 200);
+      while (!text.empty() && (text.back() == '\r' || text.back() == ' '))
+        text.pop_back();
+      if (!text.empty()) s += fmt::format(" \"{}\"", text);
+    }
+  } else {
+    s = at.valid() ? fmt::format("line {}", at.line) : std::string("line ?");
+  }
+  for (auto it = e.from.chain.rbegin(); it != e.from.chain.rend(); ++it)
+    s += fmt::format(" (in {} from line {})", it->what, it->call.line);
+  return s;
+}
+
+std::string describeItem(const Item& it, const char* side, const SourceManager* sm) {
+  std::string pieces;
+  if (it.last > it.first)
+    pieces = fmt::format(" [{} collinear pieces, events #{}..#{}]", it.last - it.first + 1,
+                         it.first, it.last);
+  return fmt::format("  {:<6} #{} {}:\n           {}{}", side, it.first, where(it.e, sm),
+                     describe(it.e), pieces);
+}
+
+/// Empty if a and b match, else why not.
+std::string mismatch(const Event& a, const Event& b, const CompareOptions& o) {
+  if (a.kind != b.kind)
+    return fmt::format("different kinds: {} vs {}", kindName(a.kind), kindName(b.kind));
+  const double tol = o.tolerance;
+  switch (a.kind) {
+  case Kind::Rapid:
+  case Kind::Feed:
+  case Kind::Arc: {
+    if (double d = maxDiff(a.start, b.start); d > tol)
+      return fmt::format("start points differ by {:.6f} mm (tolerance {})", d, tol);
+    if (double d = maxDiff(a.end, b.end); d > tol)
+      return fmt::format("end points differ by {:.6f} mm (tolerance {})", d, tol);
+    if (a.kind == Kind::Arc) {
+      if (a.plane != b.plane)
+        return fmt::format("arc planes differ: {} vs {}", planeName(a.plane), planeName(b.plane));
+      if (a.clockwise != b.clockwise)
+        return fmt::format("arc directions differ: {} vs {}", a.clockwise ? "CW" : "CCW",
+                           b.clockwise ? "CW" : "CCW");
+      if (a.turns != b.turns)
+        return fmt::format("extra full turns differ: {} vs {}", a.turns, b.turns);
+      if (double d = maxDiff(a.center, b.center); d > tol)
+        return fmt::format("arc centres differ by {:.6f} mm (tolerance {})", d, tol);
+    }
+    if (a.kind != Kind::Rapid && o.compareFeed) {
+      if (a.perRevolution != b.perRevolution)
+        return fmt::format("feed modes differ: {} vs {}", a.perRevolution ? "per rev" : "per min",
+                           b.perRevolution ? "per rev" : "per min");
+      if (std::abs(a.feed - b.feed) > o.feedTolerance)
+        return fmt::format("feeds differ: {} vs {}", a.feed, b.feed);
+    }
+    return {};
+  }
+  case Kind::Dwell:
+    if (a.perRevolution != b.perRevolution) return "dwell units differ (seconds vs revolutions)";
+    if (std::abs(a.value - b.value) > o.dwellTolerance)
+      return fmt::format("dwell times differ: {} vs {}", a.value, b.value);
+    return {};
+  case Kind::Spindle:
+    if (a.direction != b.direction || std::abs(a.value - b.value) > 1e-6)
+      return "spindle states differ";
+    return {};
+  case Kind::ToolChange:
+  case Kind::Coolant:
+  case Kind::SpindleOrient:
+    if (std::abs(a.value - b.value) > 1e-6) return "values differ";
+    return {};
+  case Kind::Stop:
+    if (a.optional != b.optional) return "optional flags differ";
+    return {};
+  case Kind::End:
+    return {};
+  case Kind::Message:
+    if (a.text != b.text) return "message texts differ";
+    return {};
+  }
+  return {};
+}
+
+} // namespace
+
+const char* kindName(Kind k) {
+  switch (k) {
+  case Kind::Rapid:
+    return "Rapid";
+  case Kind::Feed:
+    return "Feed";
+  case Kind::Arc:
+    return "Arc";
+  case Kind::Dwell:
+    return "Dwell";
+  case Kind::Spindle:
+    return "Spindle";
+  case Kind::SpindleOrient:
+    return "SpindleOrient";
+  case Kind::ToolChange:
+    return "ToolChange";
+  case Kind::Coolant:
+    return "Coolant";
+  case Kind::Stop:
+    return "Stop";
+  case Kind::End:
+    return "End";
+  case Kind::Message:
+    return "Message";
+  }
+  return "?";
+}
+
+std::string describe(const Event& e) {
+  const std::string feed = fmt::format(" F{}{}", e.feed, e.perRevolution ? "/rev" : "");
+  switch (e.kind) {
+  case Kind::Rapid:
+    return fmt::format("Rapid {} -> {}", fmtVec(e.start), fmtVec(e.end));
+  case Kind::Feed:
+    return fmt::format("Feed {} -> {}{}", fmtVec(e.start), fmtVec(e.end), feed);
+  case Kind::Arc: {
+    std::string s =
+        fmt::format("Arc {} {} {} -> {} centre {}", planeName(e.plane), e.clockwise ? "CW" : "CCW",
+                    fmtVec(e.start), fmtVec(e.end), fmtVec(e.center));
+    if (e.turns != 0) s += fmt::format(" +{} turns", e.turns);
+    if (std::abs(e.startRadius - e.endRadius) > 5e-5) // spiral, not 4-decimal rounding
+      s += fmt::format(" r {:.4f} -> {:.4f}", e.startRadius, e.endRadius);
+    else
+      s += fmt::format(" r {:.4f}", e.startRadius);
+    return s + feed;
+  }
+  case Kind::Dwell:
+    return fmt::format("Dwell {}{}", e.value, e.perRevolution ? " rev" : " s");
+  case Kind::Spindle:
+    return fmt::format("Spindle S{} {}", e.value,
+                       e.direction > 0   ? "CW"
+                       : e.direction < 0 ? "CCW"
+                                         : "stop");
+  case Kind::SpindleOrient:
+    return fmt::format("SpindleOrient {}", e.value);
+  case Kind::ToolChange:
+    return fmt::format("ToolChange T{}", e.value);
+  case Kind::Coolant:
+    return fmt::format("Coolant M{}", e.value);
+  case Kind::Stop:
+    return e.optional ? "Stop (optional)" : "Stop";
+  case Kind::End:
+    return "End";
+  case Kind::Message:
+    return fmt::format("Message \"{}\"", e.text);
+  }
+  return "?";
+}
+
+CompareResult compareEvents(const std::vector<Event>& left, const std::vector<Event>& right,
+                            const CompareOptions& o) {
+  const std::vector<Item> l = normalise(left, o), r = normalise(right, o);
+  CompareResult res;
+  const std::size_t n = std::min(l.size(), r.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::string why = mismatch(l[i].e, r[i].e, o);
+    if (why.empty()) {
+      ++res.matched;
+      continue;
+    }
+    res.leftIndex = l[i].first;
+    res.rightIndex = r[i].first;
+    res.report = fmt::format("first divergence after {} matching events: {}\n{}\n{}", i, why,
+                             describeItem(l[i], o.leftName.c_str(), o.leftSources),
+                             describeItem(r[i], o.rightName.c_str(), o.rightSources));
+    return res;
+  }
+  if (l.size() == r.size()) {
+    res.equivalent = true;
+    return res;
+  }
+  const bool leftLonger = l.size() > r.size();
+  const Item& extra = leftLonger ? l[n] : r[n];
+  (leftLonger ? res.leftIndex : res.rightIndex) = extra.first;
+  res.report = fmt::format(
+      "first divergence after {} matching events: {} ended, {} has {} more event(s):\n{}", n,
+      leftLonger ? o.rightName : o.leftName, leftLonger ? o.leftName : o.rightName,
+      (leftLonger ? l.size() : r.size()) - n,
+      describeItem(extra, (leftLonger ? o.leftName : o.rightName).c_str(),
+                   leftLonger ? o.leftSources : o.rightSources));
+  return res;
+}
+
+} // namespace gcx::oracle

@@ -1,0 +1,116 @@
+#include "support/run_support.h"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <sstream>
+
+#include "dialects/nct/profile.h"
+#include "dialects/nct/reader.h"
+#include "machine/interpreter.h"
+#include "motion/geometry.h"
+#include "passes/check/static_checks.h"
+
+namespace gcx::test {
+
+namespace {
+class Collect : public motion::Sink {
+public:
+  std::vector<motion::Event>& out;
+  motion::Sink* also;
+  Collect(std::vector<motion::Event>& o, motion::Sink* a) : out(o), also(a) {}
+  void event(const motion::Event& e) override {
+    out.push_back(e);
+    if (also) also->event(e);
+  }
+  void finish() override {
+    if (also) also->finish();
+  }
+};
+} // namespace
+
+std::string n4(double v) {
+  double r = std::round(v * 1e4) / 1e4;
+  if (r == 0) r = 0;
+  std::string s = fmt::format("{:.4f}", r);
+  while (s.back() == '0')
+    s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s;
+}
+
+std::string describe(const motion::Event& e) {
+  auto p = [](const motion::Vec3& v) { return n4(v.x()) + "," + n4(v.y()) + "," + n4(v.z()); };
+  switch (e.kind) {
+  case motion::Kind::Rapid:
+    return "R " + p(e.end);
+  case motion::Kind::Feed:
+    return "L " + p(e.end) + " F" + n4(e.feed);
+  case motion::Kind::Arc: {
+    const motion::ArcGeometry g(e);
+    const motion::PlaneAxes ax = motion::axesOf(e.plane);
+    std::string r = n4(g.startRadius());
+    if (n4(g.endRadius()) != r) r += "->" + n4(g.endRadius());
+    return fmt::format("{} {} C{},{} r{} θ{}", e.clockwise ? "CW" : "CCW", p(e.end),
+                       n4(e.center[ax.first]), n4(e.center[ax.second]), r,
+                       n4(g.sweep() * 180 / M_PI));
+  }
+  case motion::Kind::Dwell:
+    return "DW " + n4(e.value) + (e.perRevolution ? "rev" : "s");
+  case motion::Kind::Spindle:
+    return "EV S" + n4(e.value) + (e.direction > 0 ? " M3" : e.direction < 0 ? " M4" : " M5");
+  case motion::Kind::SpindleOrient:
+    return "EV M19";
+  case motion::Kind::ToolChange:
+    return "EV T" + n4(e.value) + " M6";
+  case motion::Kind::Coolant:
+    return "EV M" + n4(e.value);
+  case motion::Kind::Stop:
+    return e.optional ? "EV M1" : "EV M0";
+  case motion::Kind::End:
+    return "END";
+  case motion::Kind::Message:
+    return "MSG " + e.text;
+  }
+  return "?";
+}
+
+std::vector<std::string> ProgramRun::motion() const {
+  std::vector<std::string> out;
+  for (const motion::Event& e : events)
+    out.push_back(describe(e));
+  return out;
+}
+
+ProgramRun runNct(const std::string& text, const machine::Setup& setup, motion::Sink* also) {
+  ProgramRun run;
+  SourceManager sm;
+  diag::Engine diags(100);
+  const FileId f = sm.addBuffer("test.nct", text);
+  std::istringstream in(text);
+  nct::Reader reader(in, f, diags);
+  check::StaticChecker checker(nct::profile(), diags);
+  Collect sink(run.events, also);
+  machine::Interpreter interp(nct::profile(), setup, sink, diags);
+  ir::Block b;
+  while (reader.next(b)) {
+    const std::size_t before = diags.errorCount();
+    checker.block(b);
+    if (diags.errorCount() != before) break;
+    motion::Provenance from;
+    from.at = b.range.begin;
+    if (!interp.execute(b, from)) break;
+  }
+  run.program = interp.programPosition();
+  if (!diags.hasErrors()) {
+    interp.finish();
+    sink.finish();
+  }
+  for (const diag::Diagnostic& d : diags.all()) {
+    if (d.severity == diag::Severity::Error)
+      run.errors.push_back(fmt::format("{}:{} {}", d.range.begin.line, d.range.begin.col, d.code));
+    run.rendered += diag::renderText(d, sm);
+  }
+  return run;
+}
+
+} // namespace gcx::test

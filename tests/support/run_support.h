@@ -1,0 +1,31 @@
+// Runs NCT text on the interpreter and describes the motion compactly, in the notation of the
+// spec's test vectors: "R 100,0,30" (rapid to), "L 20,50,0 F100" (feed to),
+// "CCW 60,90,0 C60,20 r70 θ90" (arc to, centre in the plane, radius, sweep in degrees),
+// "DW 2s", "EV S1000 M3".
+#pragma once
+#include <string>
+#include <vector>
+
+#include "machine/setup.h"
+#include "motion/event.h"
+#include "support/test_support.h"
+
+namespace gcx::test {
+
+struct ProgramRun {
+  std::vector<motion::Event> events;
+  motion::Vec3 program = motion::Vec3::Zero(); // programmed position at the end (work frame)
+  std::vector<std::string> errors;             // "line:col CODE"
+  std::string rendered;
+  std::vector<std::string> motion() const; // descriptions of the events
+};
+
+/// Runs text through the NCT front end, static checks and interpreter; events also go to
+/// `also` when given (an emitter, a plotter).
+ProgramRun runNct(const std::string& text, const machine::Setup& setup = {},
+                  motion::Sink* also = nullptr);
+std::string describe(const motion::Event& e);
+/// Number rounded to 4 decimals, trailing zeros removed.
+std::string n4(double v);
+
+} // namespace gcx::test
