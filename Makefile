@@ -18,10 +18,15 @@ build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
 
 demo: build
-	@echo "== gcx check examples/nct/O1001.nct"
+	@echo "== gcx check: syntax and static checks"
 	$(BUILD)/gcx check examples/nct/O1001.nct
-	@echo "== gcx fmt examples/nct/O1001.nct"
-	$(BUILD)/gcx fmt examples/nct/O1001.nct
+	@echo "== gcx expand --to canonical: flat RS274/NGC in the machine frame (offsets from the setup)"
+	$(BUILD)/gcx expand examples/nct/O1001.nct --to canonical --setup examples/nct/O1001.setup.json --provenance
+	@echo "== gcx run --stats: the interpreter's path length, time and bounds"
+	$(BUILD)/gcx run examples/nct/O1001.nct --setup examples/nct/O1001.setup.json --stats
+	@echo "== gcx plot: the tool path as SVG"
+	$(BUILD)/gcx plot examples/nct/O1001.nct --setup examples/nct/O1001.setup.json -o $(BUILD)/O1001.svg
+	@echo "wrote $(BUILD)/O1001.svg"
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)

@@ -68,7 +68,7 @@ Profile build() {
       {71, 0, "cylindrical interpolation"},
       {90, 0, "exact stop", A::ExactStopOnce},
       {100, 0, "data input", A::DataInput},
-      {109, 0, "radius/diameter switch"},
+      {109, 0, "radius/diameter switch", A::DiameterMode},
       {110, 0, "end of data input", A::DataInputEnd},
       {121, 21, "polar interpolation on"},
       {131, 21, "polar interpolation off", A::Modeless},

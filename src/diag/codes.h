@@ -19,6 +19,9 @@ inline constexpr const char* BlockNotFound = "2125";
 // --- spec numbers (nct-macro.md §12)
 inline constexpr const char* LoopPairing = "NCTX06";
 inline constexpr const char* VariableNotAllowed = "NCTX10";
+inline constexpr const char* CallNesting = "NCTX03";
+inline constexpr const char* ProgramNotFound = "NCTX07";
+inline constexpr const char* MissingReturn = "NCTX08";
 inline constexpr const char* AtanTwoArgs = "NCTW02";
 
 // --- gcx: input files
@@ -63,5 +66,15 @@ inline constexpr const char* SetupUnknownKey = "GCX021";
 inline constexpr const char* SetupWrongType = "GCX022";
 inline constexpr const char* SetupBadValue = "GCX023";
 inline constexpr const char* SetupCannotRead = "GCX024";
+
+// --- macro evaluation (nct-macro.md §2.2, §2.6, §3.2-§3.4, §12)
+inline constexpr const char* DivideByZero = "2093";
+inline constexpr const char* TanDomain = "2116";
+inline constexpr const char* ArcDomain = "2117";
+inline constexpr const char* LogDomain = "2118";
+inline constexpr const char* SqrtNegative = "2122";
+inline constexpr const char* BitOperandRange = "2129";
+inline constexpr const char* UndefinedVariable = "NCTX01";
+inline constexpr const char* AddressValueRange = "NCTX04";
 
 } // namespace gcx::diag::code

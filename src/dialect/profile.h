@@ -87,7 +87,8 @@ enum class GAction : unsigned char {
   SurfaceSpeedOff,
   StrokeLimitOn,
   StrokeLimitOff,
-  Modeless, // state the motion model does not depend on (polar interpolation off...)
+  DiameterMode, // G10.9: axis words 1 = diameter, 0 = radius programming
+  Modeless,     // state the motion model does not depend on (polar interpolation off...)
 };
 
 struct GCodeSpec {

@@ -61,21 +61,37 @@ void CanonicalEmitter::feedMode(const motion::Event& e) {
   line(perRevolution_ ? "G95" : "G94", e);
 }
 
+// Most programs never move an extra axis and keep to X Y Z. Once one has moved, all three words
+// of its group (A B C or U V W) are written on every move, so each line states the whole target.
+void CanonicalEmitter::noteExtraAxes(const motion::Event& e) {
+  for (int i = 0; i < 6; ++i)
+    if (e.extraStart[i] != e.extraEnd[i]) (i < 3 ? rotaryWords_ : parallelWords_) = true;
+}
+
+std::string CanonicalEmitter::extraWords(const motion::Extra& x) const {
+  std::string s;
+  for (int i = 0; i < 6; ++i)
+    if (i < 3 ? rotaryWords_ : parallelWords_)
+      s += fmt::format(" {}{}", motion::kExtraAxisNames[i], num(x[i]));
+  return s;
+}
+
 void CanonicalEmitter::straight(const motion::Event& e, const char* code, const motion::Vec3& to,
-                                bool withFeed) {
-  std::string s = fmt::format("{} {}", code, xyz(to));
+                                const motion::Extra& extraTo, bool withFeed) {
+  std::string s = fmt::format("{} {}{}", code, xyz(to), extraWords(extraTo));
   if (withFeed) s += " F" + num(e.feed);
   line(std::move(s), e);
 }
 
 void CanonicalEmitter::event(const motion::Event& e) {
+  if (motion::isMotion(e)) noteExtraAxes(e);
   switch (e.kind) {
   case Kind::Rapid:
-    straight(e, "G0", e.end, false);
+    straight(e, "G0", e.end, e.extraEnd, false);
     return;
   case Kind::Feed:
     feedMode(e);
-    straight(e, "G1", e.end, true);
+    straight(e, "G1", e.end, e.extraEnd, true);
     return;
   case Kind::Arc: {
     feedMode(e);
@@ -83,8 +99,15 @@ void CanonicalEmitter::event(const motion::Event& e) {
     if (arc.isSpiral() && std::fabs(arc.startRadius() - arc.endRadius()) > 1e-9) {
       std::vector<motion::Vec3> pts;
       motion::appendArcPoints(arc, opt_.chordTolerance, pts);
-      for (const motion::Vec3& p : pts)
-        straight(e, "G1", p, true);
+      // Point i is at t = (i+1)/n; the extra axes move linearly in t like the height.
+      const double n = static_cast<double>(pts.size());
+      for (std::size_t i = 0; i < pts.size(); ++i) {
+        const motion::Extra x =
+            i + 1 == pts.size()
+                ? e.extraEnd
+                : motion::Extra(e.extraStart + (e.extraEnd - e.extraStart) * ((i + 1) / n));
+        straight(e, "G1", pts[i], x, true);
+      }
       return;
     }
     if (e.plane != plane_) {
@@ -94,7 +117,8 @@ void CanonicalEmitter::event(const motion::Event& e) {
     const motion::Vec3 d = e.center - e.start;
     const motion::PlaneAxes ax = motion::axesOf(e.plane);
     static const char letters[] = {'I', 'J', 'K'};
-    std::string s = fmt::format("{} {}", e.clockwise ? "G2" : "G3", xyz(e.end));
+    std::string s =
+        fmt::format("{} {}{}", e.clockwise ? "G2" : "G3", xyz(e.end), extraWords(e.extraEnd));
     for (int a : {0, 1, 2})
       if (a == ax.first || a == ax.second) s += fmt::format(" {}{}", letters[a], num(d[a]));
     if (e.turns > 0) s += fmt::format(" P{}", e.turns + 1);
@@ -139,6 +163,11 @@ void CanonicalEmitter::event(const motion::Event& e) {
     return;
   case Kind::Message:
     line("(MSG," + e.text + ")", e);
+    return;
+  case Kind::PlaneChange:
+  case Kind::UnitsChange:
+  case Kind::FeedModeChange:
+    // The output is always mm, and G17-G19 / G94-G95 are written from the moves that need them.
     return;
   }
 }

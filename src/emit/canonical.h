@@ -1,9 +1,9 @@
 // Canonical motion as RS274/NGC text (`gcx expand --to canonical`): G0 G1 G2 G3 G4, F, S,
-// M3/M4/M5, T M6, coolant, stops. Coordinates are the machine-frame gauge point, metric,
-// absolute: work offsets, G52/G92 shifts, tool lengths and programmable transformations are
-// baked into them, so LinuxCNC's rs274 run with zero offsets and no G43 reproduces the path
-// exactly (docs/canonical.md). Spirals, which RS274/NGC cannot express, are written as lines
-// within the chord tolerance.
+// M3/M4/M5, T M6, coolant, stops; A B C and U V W words once those axes move. Coordinates are the
+// machine-frame gauge point, metric, absolute: work offsets, G52/G92 shifts, tool lengths and
+// programmable transformations are baked into them, so LinuxCNC's rs274 run with zero offsets and
+// no G43 reproduces the path exactly (docs/canonical.md). Spirals, which RS274/NGC cannot express,
+// are written as lines within the chord tolerance.
 #pragma once
 #include <functional>
 #include <ostream>
@@ -28,13 +28,18 @@ public:
 private:
   void line(std::string text, const motion::Event& e);
   void feedMode(const motion::Event& e);
-  void straight(const motion::Event& e, const char* code, const motion::Vec3& to, bool withFeed);
+  void straight(const motion::Event& e, const char* code, const motion::Vec3& to,
+                const motion::Extra& extraTo, bool withFeed);
+  void noteExtraAxes(const motion::Event& e);
+  std::string extraWords(const motion::Extra& x) const;
 
   std::ostream& out_;
   CanonicalOptions opt_;
   bool headerDone_ = false;
   bool perRevolution_ = false;
   motion::Plane plane_ = motion::Plane::XY;
+  bool rotaryWords_ = false;   // A B C on every move once a rotary axis has moved
+  bool parallelWords_ = false; // U V W likewise
   double spindleSpeed_ = 0;
   SourceLoc lastSource_;
 };

@@ -5,6 +5,8 @@ namespace gcx::machine {
 bool BlockWords::hasAxisWord() const {
   for (int i = 0; i < 3; ++i)
     if (axis[i] || uvw[i]) return true;
+  for (const ir::Word* x : extra)
+    if (x) return true;
   return false;
 }
 
@@ -44,6 +46,15 @@ const ir::Word* sortWords(const ir::Block& b, const Profile& profile, BlockWords
       break;
     case 'W':
       out.uvw[2] = &w;
+      break;
+    case 'A':
+      out.extra[0] = &w;
+      break;
+    case 'B':
+      out.extra[1] = &w;
+      break;
+    case 'C':
+      out.extra[2] = &w;
       break;
     case 'I':
       out.ijk[0] = &w;

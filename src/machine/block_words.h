@@ -11,10 +11,11 @@ namespace gcx::machine {
 
 struct BlockWords {
   std::vector<const ir::Word*> gWords;
-  std::vector<const GCodeSpec*> gCodes;  // parallel to gWords; null when not in the table
-  std::array<const ir::Word*, 3> axis{}; // X Y Z
-  std::array<const ir::Word*, 3> uvw{};  // U V W
-  std::array<const ir::Word*, 3> ijk{};  // I J K
+  std::vector<const GCodeSpec*> gCodes;   // parallel to gWords; null when not in the table
+  std::array<const ir::Word*, 3> axis{};  // X Y Z
+  std::array<const ir::Word*, 3> uvw{};   // U V W
+  std::array<const ir::Word*, 3> ijk{};   // I J K
+  std::array<const ir::Word*, 6> extra{}; // A B C, and U V W where the machine has them as axes
   const ir::Word *r = nullptr, *f = nullptr, *s = nullptr, *t = nullptr, *h = nullptr, *d = nullptr,
                  *p = nullptr, *q = nullptr, *l = nullptr, *e = nullptr;
   std::vector<const ir::Word*> m;

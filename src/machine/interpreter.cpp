@@ -28,6 +28,12 @@ Interpreter::Interpreter(const Profile& profile, const Setup& setup, motion::Sin
   machine_ = Vec3(p[0], p[1], p[2]);
   const auto c = setup_.workOffset("common");
   offsets_.common = Vec3(c[0], c[1], c[2]);
+  for (int i = 0; i < 3; ++i)
+    if (setup_.parameter(std::string("N0103.") + "UVW"[i], 0) == 1) parallelAxes_ |= 1u << i;
+  rollover_.enabled = setup_.parameter("N0107.REN", 0) == 1;
+  rollover_.absoluteBySign = setup_.parameter("N0107.ABS", 0) == 1;
+  rollover_.shortest = setup_.parameter("N0107.ASH", 0) == 1;
+  rollover_.amount = setup_.parameter("N0108", 360);
   resetModal();
   reexpress();
 }
@@ -50,6 +56,9 @@ void Interpreter::resetModal() {
   for (int code : profile_.powerOnGCodes10)
     for (const GCodeSpec& g : profile_.gcodes)
       if (g.code10 == code) setModal(g);
+  for (int a = 0; a < 3; ++a)
+    if (setup_.parameter(std::string("N0106.DIA") + "XYZ"[a], 0) == 1)
+      state_.diameterAxes |= 1u << a;
   offsets_.g92 = offsets_.g52 = Vec3::Zero();
   offsets_.length = 0;
   transforms_.clear();
@@ -81,12 +90,15 @@ void Interpreter::emit(motion::Event e) {
   sink_.event(e);
 }
 
-void Interpreter::emitLine(Kind kind, const Vec3& to) {
-  if (to == machine_) return; // a zero-length block moves nothing (nct.md TV13 `G91 Z0`)
+void Interpreter::emitLine(Kind kind, const Vec3& to, const motion::Extra& extraTo) {
+  if (to == machine_ && extraTo == extra_) return; // a zero-length block moves nothing (TV13)
   motion::Event e;
   e.kind = kind;
   e.start = machine_;
   e.end = to;
+  e.extraStart = extra_;
+  e.extraEnd = extraTo;
+  extra_ = extraTo;
   e.feed = state_.feed;
   e.perRevolution = state_.perRevolution;
   machine_ = to;
@@ -113,7 +125,15 @@ bool Interpreter::execute(const ir::Block& block, const motion::Provenance& from
     if (!o->is('N') && !o->is('O'))
       return fail(diag::code::NotImplemented, o->range,
                   fmt::format("address {} is not implemented yet", o->address));
+  for (int i = 0; i < 3; ++i)
+    if ((parallelAxes_ & (1u << i)) && w.uvw[i]) { // U V W are axes, not incremental aliases
+      w.extra[3 + i] = w.uvw[i];
+      w.uvw[i] = nullptr;
+    }
+  const ModalState before = state_;
   if (!applyModal(w)) return false;
+  selectPlaneAxes(w);
+  emitModalChanges(before);
   bool consumed = false;
   if (!applyNonMotion(w, consumed)) return false;
   const bool arcWithCentreOnly =
@@ -184,6 +204,11 @@ bool Interpreter::setModal(const GCodeSpec& g) {
   case GAction::ReturnInitial:
   case GAction::ReturnR:
   case GAction::SurfaceSpeedOff:
+    state_.surfaceSpeed = false;
+    return true;
+  case GAction::SurfaceSpeedOn:
+    state_.surfaceSpeed = true;
+    return true;
   case GAction::StrokeLimitOff:
   case GAction::ModalMacroCancel:
   case GAction::Modeless:
@@ -233,6 +258,7 @@ bool Interpreter::applyModal(const BlockWords& w) {
     case GAction::MachineCoordinates:
     case GAction::ReferenceReturn:
     case GAction::OtherReferenceReturn:
+    case GAction::DiameterMode:
       break; // applyNonMotion
     default:
       return fail(diag::code::NotImplemented, word.range,
@@ -355,11 +381,29 @@ bool Interpreter::applyNonMotion(const BlockWords& w, bool& consumed) {
     return dataInput(w, ir::Block{});
   }
   if (w.has(GAction::DataInputEnd)) dataMode_ = false;
-  if (const ir::Word* g = w.findAction(GAction::SetCoordinates)) {
+  if (w.has(GAction::DiameterMode)) { // G10.9 X1: X in diameter, X0: in radius (nct.md §3.8)
     consumed = true;
-    if (w.s)
-      return fail(diag::code::NotImplemented, g->range,
-                  "G92 S (spindle clamp) is not implemented yet");
+    for (int a = 0; a < 3; ++a)
+      if (w.axis[a]) {
+        if (w.axis[a]->number == 1)
+          state_.diameterAxes |= 1u << a;
+        else if (w.axis[a]->number == 0)
+          state_.diameterAxes &= ~(1u << a);
+        else
+          return fail(diag::code::DataOutOfRange, w.axis[a]->range,
+                      "G10.9 takes 1 (diameter) or 0 (radius) per axis");
+      }
+    return true;
+  }
+  if (w.has(GAction::SetCoordinates)) {
+    consumed = true;
+    if (w.s) { // G92 S: spindle speed limit of constant surface speed (nct.md §3.18)
+      if (w.hasAxisWord())
+        return fail(diag::code::ForbiddenAddress, w.s->range,
+                    "G92 S (spindle limit) and G92 coordinates in one block (nct.md Q28)");
+      state_.maxSpindleSpeed = w.s->number;
+      return true;
+    }
     return setCoordinates(w);
   }
   if (w.has(GAction::LocalCoordinates)) {
@@ -507,14 +551,89 @@ bool Interpreter::dataInput(const BlockWords& w, const ir::Block& dataBlock) {
               fmt::format("G10 L{} is not implemented yet", l));
 }
 
+double Interpreter::coordinate(int axis, const ir::Word& w) const {
+  const double v = mm(w.number);
+  return (state_.diameterAxes >> axis) & 1u ? v / 2 : v; // diameter axes (nct.md §3.8)
+}
+
+double Interpreter::rotaryDelta(double current, double value) const {
+  // absolute rotary target -> signed travel (nct.md §3.10); without rollover: plain linear axis
+  if (!rollover_.enabled) return value - current;
+  const double a = rollover_.amount;
+  double display = std::fmod(current, a);
+  if (display < 0) display += a;
+  if (rollover_.absoluteBySign) { // ABS=1: |value| mod A, direction by the sign, 0 positive
+    const double t = std::fmod(std::fabs(value), a);
+    double d = std::fmod(value >= 0 ? t - display : display - t, a);
+    if (d < 0) d += a;
+    return value >= 0 ? d : -d;
+  }
+  double d = std::fmod(value - display, a); // sign-preserving, whole turns removed
+  if (rollover_.shortest) {
+    if (d > a / 2)
+      d -= a;
+    else if (d < -a / 2)
+      d += a;
+  }
+  return d;
+}
+
+motion::Extra Interpreter::extraTarget(const BlockWords& w) const {
+  motion::Extra t = extra_;
+  for (int i = 0; i < 6; ++i) {
+    const ir::Word* x = w.extra[i];
+    if (!x) continue;
+    const bool inc = state_.incremental || x->incremental;
+    if (i < 3) { // rotary, degrees, never converted by G20
+      t[i] = inc ? extra_[i] + x->number : extra_[i] + rotaryDelta(extra_[i], x->number);
+    } else { // U V W axes parallel to X Y Z
+      const double v = mm(x->number);
+      t[i] = inc ? extra_[i] + v : v;
+    }
+  }
+  return t;
+}
+
+void Interpreter::selectPlaneAxes(const BlockWords& w) {
+  // G17 U_ V_ selects the UV plane; each parallel-axis word replaces only its own role (§3.6)
+  const bool xy = w.has(GAction::PlaneXY), zx = w.has(GAction::PlaneZX),
+             yz = w.has(GAction::PlaneYZ);
+  if (!xy && !zx && !yz) return;
+  const bool u = w.extra[3], v = w.extra[4], ww = w.extra[5];
+  std::string names;
+  if (xy) names = {u ? 'U' : 'X', v ? 'V' : 'Y'};
+  if (zx) names = {ww ? 'W' : 'Z', u ? 'U' : 'X'};
+  if (yz) names = {v ? 'V' : 'Y', ww ? 'W' : 'Z'};
+  const bool main = names == "XY" || names == "ZX" || names == "YZ";
+  state_.planeAxes = main ? std::string() : names;
+}
+
+void Interpreter::emitModalChanges(const ModalState& before) {
+  auto change = [&](Kind kind, double value) {
+    motion::Event e;
+    e.kind = kind;
+    e.start = e.end = machine_;
+    e.extraStart = e.extraEnd = extra_;
+    e.value = value;
+    e.plane = state_.plane;
+    e.text = kind == Kind::PlaneChange ? state_.planeAxes : std::string();
+    emit(std::move(e));
+  };
+  if (before.plane != state_.plane || before.planeAxes != state_.planeAxes)
+    change(Kind::PlaneChange, 0);
+  if (before.inch != state_.inch) change(Kind::UnitsChange, state_.inch ? 20 : 21);
+  if (before.perRevolution != state_.perRevolution)
+    change(Kind::FeedModeChange, state_.perRevolution ? 95 : 94);
+}
+
 Vec3 Interpreter::target(const BlockWords& w, bool allowPolar) const {
   Vec3 t = program_;
   for (int a = 0; a < 3; ++a) {
     if (const ir::Word* x = w.axis[a]) {
-      const double v = mm(x->number);
+      const double v = coordinate(a, *x);
       t[a] = (state_.incremental || x->incremental) ? program_[a] + v : v;
     }
-    if (const ir::Word* u = w.uvw[a]) t[a] += mm(u->number); // U V W: incremental aliases
+    if (const ir::Word* u = w.uvw[a]) t[a] += coordinate(a, *u); // U V W: incremental aliases
   }
   if (!allowPolar || !state_.polar) return t;
   // polar input (nct.md §3.9): first plane axis = radius, second = angle in degrees
@@ -549,28 +668,34 @@ bool Interpreter::move(const BlockWords& w) {
   if (state_.cycle != GAction::CycleCancel)
     return fail(diag::code::NotImplemented, blockRange_, "canned cycles are not implemented yet");
   const Vec3 to = target(w, true);
+  const motion::Extra extraTo = extraTarget(w);
   switch (state_.motion) {
   case GAction::Rapid:
-    emitLine(Kind::Rapid, toMachine(to));
+    emitLine(Kind::Rapid, toMachine(to), extraTo);
     program_ = to;
     return true;
   case GAction::Linear:
     if (state_.feed <= 0)
       return fail(diag::code::MissingData, blockRange_, "linear move without a feed rate F");
-    emitLine(Kind::Feed, toMachine(to));
+    emitLine(Kind::Feed, toMachine(to), extraTo);
     program_ = to;
     return true;
   case GAction::ArcCW:
   case GAction::ArcCCW: {
+    if (!state_.planeAxes.empty())
+      return fail(diag::code::NotImplemented, blockRange_,
+                  fmt::format("arcs in the {} plane of parallel axes are not implemented yet",
+                              state_.planeAxes));
     const motion::PlaneAxes ax = motion::axesOf(state_.plane);
-    return arc(w, to, axisGiven(w, ax.first) || axisGiven(w, ax.second));
+    return arc(w, to, extraTo, axisGiven(w, ax.first) || axisGiven(w, ax.second));
   }
   default:
     return fail(diag::code::NotImplemented, blockRange_, "motion mode not implemented yet");
   }
 }
 
-bool Interpreter::arc(const BlockWords& w, const Vec3& end, bool haveInPlaneEnd) {
+bool Interpreter::arc(const BlockWords& w, const Vec3& end, const motion::Extra& extraEnd,
+                      bool haveInPlaneEnd) {
   const motion::PlaneAxes ax = motion::axesOf(state_.plane);
   const bool cw = state_.motion == GAction::ArcCW;
   const SourceRange& at = blockRange_;
@@ -647,6 +772,8 @@ bool Interpreter::arc(const BlockWords& w, const Vec3& end, bool haveInPlaneEnd)
   motion::Event e;
   e.kind = Kind::Arc;
   e.start = machine_;
+  e.extraStart = extra_;
+  e.extraEnd = extraEnd;
   e.end = toMachine(end);
   e.center = toMachine(centre);
   e.plane = state_.plane;
@@ -657,6 +784,7 @@ bool Interpreter::arc(const BlockWords& w, const Vec3& end, bool haveInPlaneEnd)
   e.feed = state_.feed;
   e.perRevolution = state_.perRevolution;
   machine_ = e.end;
+  extra_ = extraEnd;
   program_ = end;
   emit(std::move(e));
   return true;
@@ -666,27 +794,43 @@ bool Interpreter::afterMotion(const BlockWords& w) {
   // M, S and T act after the motion of their block (nct.md §2.2)
   if (w.t) state_.selectedTool = static_cast<int>(w.t->number);
   bool spindleChanged = false;
-  if (w.s) {
-    state_.spindleSpeed = w.s->number;
+  const bool clampOnly = w.has(GAction::SetCoordinates); // G92 S is the clamp, not a speed
+  if (w.s && !clampOnly) {
+    if (state_.surfaceSpeed)
+      state_.surfaceSpeedValue = w.s->number;
+    else
+      state_.spindleSpeed = w.s->number;
     spindleChanged = true;
   }
   for (const ir::Word* m : w.m) {
     const int code = static_cast<int>(m->number);
-    switch (code) {
-    case 3:
-    case 4:
-    case 5:
+    if (code == 3 || code == 4 || code == 5) {
       state_.spindleDirection = code == 3 ? 1 : code == 4 ? -1 : 0;
       spindleChanged = true;
-      break;
-    default:
-      break;
+    }
+  }
+  if (state_.surfaceSpeed) {
+    // G96: rpm from the surface speed at the block's end point, radius |X| of the work
+    // system (nct.md §3.18: rapid blocks use the end-point speed)
+    const double radius = std::fabs(program_.x());
+    const double metresPerMinute =
+        state_.inch ? state_.surfaceSpeedValue * 0.3048 : state_.surfaceSpeedValue;
+    double rpm = state_.maxSpindleSpeed;
+    if (radius > 1e-9) rpm = metresPerMinute * 1000.0 / (2 * M_PI * radius);
+    if (state_.maxSpindleSpeed > 0) rpm = std::min(rpm, state_.maxSpindleSpeed);
+    if (rpm <= 0 && state_.surfaceSpeedValue > 0)
+      return fail(diag::code::MissingData, blockRange_,
+                  "constant surface speed at radius 0 needs a spindle limit (G92 S)");
+    if (std::fabs(rpm - state_.spindleSpeed) > 1e-9) {
+      state_.spindleSpeed = rpm;
+      spindleChanged = true;
     }
   }
   if (spindleChanged) {
     motion::Event e;
     e.kind = Kind::Spindle;
     e.start = e.end = machine_;
+    e.extraStart = e.extraEnd = extra_;
     e.value = state_.spindleSpeed;
     e.direction = state_.spindleDirection;
     emit(std::move(e));

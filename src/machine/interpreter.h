@@ -6,6 +6,7 @@
 #include <array>
 #include <map>
 #include <optional>
+#include <string>
 
 #include "diag/diagnostic.h"
 #include "dialect/profile.h"
@@ -33,9 +34,22 @@ struct ModalState {
   GAction feedControl = GAction::ContinuousMode;
   double feed = 0; // mm/min or mm/rev
   double spindleSpeed = 0;
-  int spindleDirection = 0; // +1 M3, -1 M4, 0 M5
-  int selectedTool = 0;     // T
-  int tool = 0;             // in the spindle after M6
+  int spindleDirection = 0;  // +1 M3, -1 M4, 0 M5
+  int selectedTool = 0;      // T
+  int tool = 0;              // in the spindle after M6
+  std::string planeAxes;     // the plane's axes when parallel axes form it ("UV"), else empty
+  bool surfaceSpeed = false; // G96: S is a surface speed (m/min or ft/min)
+  double surfaceSpeedValue = 0;
+  double maxSpindleSpeed = 0; // G92 S clamp for G96 (0: none)
+  unsigned diameterAxes = 0;  // bit a: axis a (X=0) programmed as a diameter (G10.9, N0106)
+};
+
+/// Rotary-axis rollover (nct.md §3.10, N0107 REN/ABS/ASH, N0108 RollAmount).
+struct Rollover {
+  bool enabled = false;
+  bool absoluteBySign = false; // ABS=1: the sign of the value gives the direction
+  bool shortest = false;       // ASH=1: the shortest way
+  double amount = 360;
 };
 
 class Interpreter {
@@ -75,7 +89,10 @@ private:
   bool applyModal(const BlockWords& w);
   bool applyNonMotion(const BlockWords& w, bool& consumedAxes);
   bool move(const BlockWords& w);
-  bool arc(const BlockWords& w, const Vec3& target, bool haveInPlaneEnd);
+  bool arc(const BlockWords& w, const Vec3& target, const motion::Extra& extraEnd,
+           bool haveInPlaneEnd);
+  /// An axis word in mm, halved on a diameter axis.
+  double coordinate(int axis, const ir::Word& w) const;
   bool afterMotion(const BlockWords& w);
   /// Target of the axis words in program coordinates (G90/G91, I operator, U/V/W, polar).
   Vec3 target(const BlockWords& w, bool allowPolar) const;
@@ -86,7 +103,13 @@ private:
   bool referenceReturn(const BlockWords& w, int point);
   bool machineMove(const BlockWords& w);
   bool transforms(const BlockWords& w);
-  void emitLine(motion::Kind kind, const Vec3& to);
+  void emitLine(motion::Kind kind, const Vec3& to, const motion::Extra& extraTo);
+  void emitLine(motion::Kind kind, const Vec3& to) { emitLine(kind, to, extra_); }
+  /// End positions of A B C (rollover rules) and of U V W axes for the words of a block.
+  motion::Extra extraTarget(const BlockWords& w) const;
+  double rotaryDelta(double current, double value) const;
+  void selectPlaneAxes(const BlockWords& w);
+  void emitModalChanges(const ModalState& before);
   void emit(motion::Event e);
 
   const Profile& profile_;
@@ -98,6 +121,9 @@ private:
   Transforms transforms_;
   Vec3 program_ = Vec3::Zero();
   Vec3 machine_ = Vec3::Zero();
+  motion::Extra extra_ = motion::Extra::Zero(); // A B C (continuous, degrees), U V W (mm)
+  unsigned parallelAxes_ = 0; // bit i: U/V/W is an axis parallel to X/Y/Z (N0103.U ...)
+  Rollover rollover_;
   double radiusTolerance_;
   motion::Provenance from_;
   SourceRange blockRange_;

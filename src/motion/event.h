@@ -12,6 +12,10 @@
 namespace gcx::motion {
 
 using Vec3 = Eigen::Vector3d;
+/// Axes beyond X Y Z, in this order: rotary A B C (degrees) and U V W when the machine has them
+/// as axes parallel to X Y Z (mm). They move linearly with the path, like a helix's height.
+using Extra = Eigen::Matrix<double, 6, 1>;
+inline constexpr char kExtraAxisNames[] = {'A', 'B', 'C', 'U', 'V', 'W'};
 
 /// Where an event came from: the source block and the chain of calls that led to it
 /// ("in O9010 called from main.nct:12, loop iteration 3").
@@ -27,17 +31,20 @@ struct Provenance {
 enum class Plane { XY, ZX, YZ }; // G17, G18, G19
 
 enum class Kind {
-  Rapid,         // straight traverse start -> end
-  Feed,          // straight feed start -> end
-  Arc,           // arc/helix/spiral start -> end about center in plane
-  Dwell,         // seconds (or revolutions when perRevolution)
-  Spindle,       // speed and direction (+1 CW M3, -1 CCW M4, 0 stop M5)
-  SpindleOrient, // M19
-  ToolChange,    // tool number
-  Coolant,       // on/off (M7 mist, M8 flood, M9 off)
-  Stop,          // M0 / M1 (optional)
-  End,           // M2 / M30
-  Message,       // operator message (#3006, DPRNT to screen, ...)
+  Rapid,          // straight traverse start -> end
+  Feed,           // straight feed start -> end
+  Arc,            // arc/helix/spiral start -> end about center in plane
+  Dwell,          // seconds (or revolutions when perRevolution)
+  Spindle,        // speed and direction (+1 CW M3, -1 CCW M4, 0 stop M5)
+  SpindleOrient,  // M19
+  ToolChange,     // tool number
+  Coolant,        // on/off (M7 mist, M8 flood, M9 off)
+  Stop,           // M0 / M1 (optional)
+  End,            // M2 / M30
+  Message,        // operator message (#3006, DPRNT to screen, ...)
+  PlaneChange,    // G17/G18/G19: plane; text names its axes when parallel axes form it ("UV")
+  UnitsChange,    // G20/G21 of the program (value 20 or 21); event values stay in mm
+  FeedModeChange, // G94/G95 (value 94 or 95)
 };
 
 struct Event {
@@ -47,20 +54,23 @@ struct Event {
   // geometry, machine frame, mm (the gauge point: tool tip + length offset + work offset)
   Vec3 start = Vec3::Zero();
   Vec3 end = Vec3::Zero();
+  Extra extraStart = Extra::Zero(); // A B C U V W at start and end (see Extra)
+  Extra extraEnd = Extra::Zero();
   Vec3 center = Vec3::Zero(); // Arc: centre at the start point's height along the normal
-  Plane plane = Plane::XY;    // Arc
+  Plane plane = Plane::XY;    // Arc, PlaneChange
   bool clockwise = false;     // Arc: seen from the positive normal axis
   int turns = 0;              // Arc: extra full turns beyond the first sweep (NCT L-1)
-  double startRadius = 0;     // Arc: radius at start; endRadius differs for spirals
-  double endRadius = 0;
+  double startRadius = 0;     // Arc: |start - center| in the plane (after transformations)
+  double endRadius = 0;       // Arc: |end - center|; differs from startRadius for spirals
 
   // feed and other values
   double feed = 0;            // mm/min, or mm/rev when perRevolution
   bool perRevolution = false; // G95 feed, or G4 in revolutions
-  double value = 0;           // Dwell time, Spindle speed, ToolChange tool, Coolant code
-  int direction = 0;          // Spindle: +1 CW, -1 CCW, 0 stop
-  bool optional = false;      // Stop: M1
-  std::string text;           // Message
+  double value = 0;      // Dwell time, Spindle speed (emitted whenever S or the direction changes),
+                         // ToolChange tool, Coolant code, UnitsChange / FeedModeChange code
+  int direction = 0;     // Spindle: +1 CW, -1 CCW, 0 stop
+  bool optional = false; // Stop: M1
+  std::string text;      // Message; PlaneChange axis names
 };
 
 /// A consumer of motion events.

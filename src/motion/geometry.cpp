@@ -153,9 +153,10 @@ double pathLength(const Event& e) {
     return (e.end - e.start).norm();
   case Kind::Arc:
     return ArcGeometry(e).length();
-  default:
-    return 0;
+  default: // every other kind moves nothing (isMotion)
+    break;
   }
+  return 0;
 }
 
 Box3 pathBounds(const Event& e) {
@@ -168,9 +169,10 @@ Box3 pathBounds(const Event& e) {
   }
   case Kind::Arc:
     return ArcGeometry(e).bounds();
-  default:
-    return Box3();
+  default: // every other kind moves nothing (isMotion)
+    break;
   }
+  return Box3();
 }
 
 } // namespace gcx::motion

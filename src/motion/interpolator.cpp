@@ -42,9 +42,10 @@ std::vector<Vec3> samplePoints(const Event& e, double tol) {
     appendArcPoints(ArcGeometry(e), tol, pts);
     return pts;
   }
-  default:
-    return {};
+  default: // every other kind moves nothing (isMotion)
+    break;
   }
+  return {};
 }
 
 ArcLinearizer::ArcLinearizer(Sink& next, double tol) : next_(next), tol_(tol) {
@@ -63,12 +64,18 @@ void ArcLinearizer::event(const Event& e) {
   piece.from = e.from;
   piece.feed = e.feed;
   piece.perRevolution = e.perRevolution;
-  Vec3 prev = e.start;
-  for (const Vec3& p : points_) {
-    piece.start = prev;
-    piece.end = p;
+  piece.start = e.start;
+  piece.extraStart = e.extraStart;
+  // Point i is at t = (i+1)/n; the extra axes move linearly in t like the helix height.
+  const double n = static_cast<double>(points_.size());
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    piece.end = points_[i];
+    piece.extraEnd = i + 1 == points_.size()
+                         ? e.extraEnd
+                         : Extra(e.extraStart + (e.extraEnd - e.extraStart) * ((i + 1) / n));
     next_.event(piece);
-    prev = p;
+    piece.start = piece.end;
+    piece.extraStart = piece.extraEnd;
   }
 }
 

@@ -23,7 +23,8 @@ void appendArcPoints(const ArcGeometry& arc, double tol, std::vector<Vec3>& out)
 std::vector<Vec3> samplePoints(const Event& e, double tol);
 
 /// An arc linearizer stage: every Arc becomes consecutive Feed events (same provenance, feed and
-/// perRevolution) along its polyline; all other events pass through unchanged.
+/// perRevolution) along its polyline, the extra axes interpolated linearly; all other events pass
+/// through unchanged.
 class ArcLinearizer : public Sink {
 public:
   /// Throws std::invalid_argument unless tol > 0.

@@ -6,6 +6,19 @@
 
 namespace gcx::motion {
 
+namespace {
+/// A line that moves no X Y Z: F applies to the extra axes (nct.md §3.4), so it takes their
+/// travel (degrees, and mm of U V W) over F. 0 for other moves.
+double extraOnlyTravel(const Event& e, double length) {
+  return length == 0 ? (e.extraEnd - e.extraStart).norm() : 0;
+}
+/// Whether a line turns rotary axes and moves nothing else.
+bool rotaryOnly(const Event& e, double length) {
+  const Extra d = e.extraEnd - e.extraStart;
+  return length == 0 && (d.head<3>().array() != 0).any() && (d.tail<3>().array() == 0).all();
+}
+} // namespace
+
 StatsCollector::StatsCollector(StatsOptions opt) : opt_(opt) {}
 
 void StatsCollector::addFeedTime(const Event& e, double length) {
@@ -22,6 +35,7 @@ void StatsCollector::event(const Event& e) {
     const double len = pathLength(e);
     stats_.bounds.extend(e.start).extend(e.end);
     ++stats_.rapidMoves;
+    if (rotaryOnly(e, len)) ++stats_.rotaryMoves;
     stats_.rapidLength += len;
     if (opt_.rapidRate > 0) stats_.rapidSeconds += len / opt_.rapidRate * 60;
     break;
@@ -31,7 +45,8 @@ void StatsCollector::event(const Event& e) {
     stats_.bounds.extend(e.start).extend(e.end);
     ++stats_.feedMoves;
     stats_.feedLength += len;
-    addFeedTime(e, len);
+    if (rotaryOnly(e, len)) ++stats_.rotaryMoves;
+    addFeedTime(e, len > 0 ? len : extraOnlyTravel(e, len));
     break;
   }
   case Kind::Arc: {
@@ -59,7 +74,14 @@ void StatsCollector::event(const Event& e) {
   case Kind::ToolChange:
     ++stats_.toolChanges;
     break;
-  default:
+  case Kind::SpindleOrient:
+  case Kind::Coolant:
+  case Kind::Stop:
+  case Kind::End:
+  case Kind::Message:
+  case Kind::PlaneChange:
+  case Kind::UnitsChange:
+  case Kind::FeedModeChange:
     break;
   }
 }
@@ -76,8 +98,10 @@ double round6(double v) {
 
 std::string formatReport(const Stats& s) {
   std::string out;
-  out += fmt::format("moves         rapid {}, feed {}, arc {}\n", s.rapidMoves, s.feedMoves,
-                     s.arcMoves);
+  out +=
+      fmt::format("moves         rapid {}, feed {}, arc {}", s.rapidMoves, s.feedMoves, s.arcMoves);
+  if (s.rotaryMoves > 0) out += fmt::format(" ({} rotary only)", s.rotaryMoves);
+  out += '\n';
   out += fmt::format(
       "length        rapid {:.3f} mm, feed {:.3f} mm (arcs {:.3f} mm), total {:.3f} mm\n",
       s.rapidLength, s.feedLength, s.arcLength, s.totalLength());
@@ -105,7 +129,10 @@ nlohmann::json toJson(const Stats& s) {
     return json::array({round6(v.x()), round6(v.y()), round6(v.z())});
   };
   json j;
-  j["moves"] = {{"rapid", s.rapidMoves}, {"feed", s.feedMoves}, {"arc", s.arcMoves}};
+  j["moves"] = {{"rapid", s.rapidMoves},
+                {"feed", s.feedMoves},
+                {"arc", s.arcMoves},
+                {"rotary", s.rotaryMoves}};
   j["length_mm"] = {{"rapid", round6(s.rapidLength)},
                     {"feed", round6(s.feedLength)},
                     {"arc", round6(s.arcLength)},

@@ -21,6 +21,11 @@ struct Stats {
   double arcLength = 0;                                    // mm, the arc part of feedLength
   double rapidSeconds = 0, feedSeconds = 0, dwellSeconds = 0;
   std::size_t dwells = 0, toolChanges = 0;
+  /// Rapid and feed lines that turn rotary axes only (also in rapidMoves / feedMoves). Lengths
+  /// are X Y Z, so theirs is 0. A feed line without X Y Z motion takes the travel of its extra
+  /// axes over F (degrees/min for rotary-only moves, nct.md §3.4); such a rapid takes no time
+  /// (rapid rates of the extra axes are machine data).
+  std::size_t rotaryMoves = 0;
   /// Feed moves and dwells whose time is unknown: F0, or per-revolution with the spindle stopped.
   /// They add nothing to the times above.
   std::size_t untimed = 0;
@@ -46,7 +51,8 @@ private:
 
 /// A few aligned lines for people, e.g. "length       rapid 50.000 mm, feed ...".
 std::string formatReport(const Stats& s);
-/// {"moves":{...},"length_mm":{...},"time_s":{...},"dwells":n,"tool_changes":n,"untimed":n,
+/// {"moves":{"rapid":n,"feed":n,"arc":n,"rotary":n},"length_mm":{...},"time_s":{...},
+///  "dwells":n,"tool_changes":n,"untimed":n,
 ///  "bounds":{"min":[x,y,z],"max":[x,y,z]} or null}; numbers rounded to 6 decimals.
 nlohmann::json toJson(const Stats& s);
 

@@ -34,6 +34,12 @@ const char* kindName(Kind k) {
     return "end";
   case Kind::Message:
     return "message";
+  case Kind::PlaneChange:
+    return "plane";
+  case Kind::UnitsChange:
+    return "units";
+  case Kind::FeedModeChange:
+    return "feed_mode";
   }
   return "unknown";
 }
@@ -71,6 +77,20 @@ void key(std::string& s, const char* k) {
   s += k;
   s += "\":";
 }
+
+void appendExtra(std::string& s, const Extra& v, unsigned axes) {
+  s += '{';
+  bool first = true;
+  for (int i = 0; i < 6; ++i) {
+    if (!(axes & (1u << i))) continue;
+    s += first ? "\"" : ",\"";
+    s += kExtraAxisNames[i];
+    s += "\":";
+    appendDecimal(s, v[i]);
+    first = false;
+  }
+  s += '}';
+}
 } // namespace
 
 TraceWriter::TraceWriter(std::ostream& out, FileNames names, TraceOptions opt)
@@ -96,6 +116,16 @@ std::string TraceWriter::line(const Event& e) {
     appendVec(s, e.start);
     key(s, "end");
     appendVec(s, e.end);
+    // Only the axes that are off zero at either end, so 3-axis traces stay as they were.
+    unsigned axes = 0;
+    for (int i = 0; i < 6; ++i)
+      if (e.extraStart[i] != 0 || e.extraEnd[i] != 0) axes |= 1u << i;
+    if (axes != 0) {
+      key(s, "extra_start");
+      appendExtra(s, e.extraStart, axes);
+      key(s, "extra_end");
+      appendExtra(s, e.extraEnd, axes);
+    }
   }
   switch (e.kind) {
   case Kind::Arc:
@@ -156,7 +186,23 @@ std::string TraceWriter::line(const Event& e) {
     key(s, "text");
     appendString(s, e.text);
     break;
-  default:
+  case Kind::PlaneChange:
+    key(s, "plane");
+    s += '"';
+    s += planeName(e.plane);
+    s += '"';
+    if (!e.text.empty()) {
+      key(s, "axes");
+      appendString(s, e.text);
+    }
+    break;
+  case Kind::UnitsChange:
+  case Kind::FeedModeChange:
+    key(s, "code");
+    appendDecimal(s, e.value);
+    break;
+  case Kind::Rapid:
+  case Kind::End:
     break;
   }
   if (e.from.at.valid()) {

@@ -2,8 +2,11 @@
 //
 // Keys, in this order, only where they apply:
 //   kind     "rapid" "feed" "arc" "dwell" "spindle" "spindle_orient" "tool_change" "coolant"
-//            "stop" "end" "message"
+//            "stop" "end" "message" "plane" "units" "feed_mode"
 //   start, end                      motion: [x,y,z] in mm, machine frame
+//   extra_start, extra_end          motion, only when an extra axis is off zero at either end:
+//                                   {"A":0,"C":90}, the axes off zero at either end (A B C in
+//                                   degrees, U V W in mm)
 //   center, plane, dir, turns       arc: centre [x,y,z], "XY"|"ZX"|"YZ", "cw"|"ccw", extra turns
 //   points                          arc in sample mode, instead of the four above: [[x,y,z],...]
 //                                   from start to end at the chord tolerance
@@ -15,6 +18,9 @@
 //   code                            coolant: 7, 8 or 9
 //   optional                        stop: true for M1
 //   text                            message
+//   plane, axes                     plane: "XY"|"ZX"|"YZ", and the axis names when parallel
+//                                   axes form it ("UV")
+//   code                            units: 20 or 21; feed_mode: 94 or 95
 //   at                              "file:line:col" of the block (left out when unknown)
 //   chain                           [{"what":"O9010","at":"main.nct:12:1"}, ...], outermost first,
 //                                   left out when empty

@@ -164,7 +164,15 @@ Event CanonReader::make(Kind k, std::uint32_t line) const {
   }
   e.start = pos_;
   e.end = pos_;
+  e.extraStart = e.extraEnd = extra_;
   return e;
+}
+
+void CanonReader::rotaryTarget(const std::vector<double>& v, std::size_t first, Event& e) {
+  if (v.size() < first + 3) return; // a b c not printed: they stay where they are
+  e.extraEnd.head<3>() =
+      Vec3(v[first], v[first + 1], v[first + 2]) + g92Rotary_ + g5xRotary_ + toolRotary_;
+  extra_ = e.extraEnd;
 }
 
 void CanonReader::push(Event e) {
@@ -222,10 +230,11 @@ void CanonReader::call(const CanonCall& c, std::string_view text) {
     return c.args.empty() ? std::string_view() : std::string_view(c.args[0]);
   };
 
-  if (n == "STRAIGHT_TRAVERSE" || n == "STRAIGHT_FEED") {
-    if (!numbers(c, 3, v, text)) return;
+  if (n == "STRAIGHT_TRAVERSE" || n == "STRAIGHT_FEED") { // (x, y, z, a, b, c)
+    if (!numbers(c, c.args.size() >= 6 ? 6 : 3, v, text)) return;
     Event e = make(n == "STRAIGHT_FEED" ? Kind::Feed : Kind::Rapid, c.line);
     e.end = toMachine(Vec3(v[0], v[1], v[2]));
+    rotaryTarget(v, 3, e);
     if (e.kind == Kind::Feed) {
       e.feed = synced_ ? syncPitch_ : feed_;
       e.perRevolution = synced_ || perRev_;
@@ -233,8 +242,8 @@ void CanonReader::call(const CanonCall& c, std::string_view text) {
     }
     pos_ = e.end;
     push(std::move(e));
-  } else if (n == "ARC_FEED") {
-    if (!numbers(c, 6, v, text)) return;
+  } else if (n == "ARC_FEED") { // (e1, e2, c1, c2, rot, e3, a, b, c)
+    if (!numbers(c, c.args.size() >= 9 ? 9 : 6, v, text)) return;
     const double e1 = v[0], e2 = v[1], c1 = v[2] * unit_, c2 = v[3] * unit_, e3 = v[5];
     const int rot = static_cast<int>(std::lround(v[4]));
     const Vec3 startProg = toProgramMm(pos_);
@@ -256,6 +265,7 @@ void CanonReader::call(const CanonCall& c, std::string_view text) {
     Event e = make(Kind::Arc, c.line);
     e.plane = plane_;
     e.end = toMachine(endProg);
+    rotaryTarget(v, 6, e);
     e.center = toMachine(centreProgMm / unit_);
     int a = 0, b = 0, nrm = 0;
     planeAxes(plane_, a, b, nrm);
@@ -303,17 +313,20 @@ void CanonReader::call(const CanonCall& c, std::string_view text) {
     else
       note(c.line, text, "unknown length units");
   } else if (n == "SET_G5X_OFFSET") { // (index, x, y, z, a, b, c)
-    if (!numbers(c, 4, v, text)) return;
+    if (!numbers(c, c.args.size() >= 7 ? 7 : 4, v, text)) return;
     g5x_ = Vec3(v[1], v[2], v[3]) * unit_;
-  } else if (n == "SET_G92_OFFSET") {
-    if (!numbers(c, 3, v, text)) return;
+    if (v.size() >= 7) g5xRotary_ = Vec3(v[4], v[5], v[6]);
+  } else if (n == "SET_G92_OFFSET") { // (x, y, z, a, b, c)
+    if (!numbers(c, c.args.size() >= 6 ? 6 : 3, v, text)) return;
     g92_ = Vec3(v[0], v[1], v[2]) * unit_;
+    if (v.size() >= 6) g92Rotary_ = Vec3(v[3], v[4], v[5]);
   } else if (n == "SET_XY_ROTATION") {
     if (!numbers(c, 1, v, text)) return;
     rotationDeg_ = v[0];
   } else if (n == "USE_TOOL_LENGTH_OFFSET") { // (x y z, a b c, u v w)
-    if (!numbers(c, 3, v, text)) return;
+    if (!numbers(c, c.args.size() >= 6 ? 6 : 3, v, text)) return;
     tool_ = Vec3(v[0], v[1], v[2]) * unit_;
+    if (v.size() >= 6) toolRotary_ = Vec3(v[3], v[4], v[5]);
   } else if (n == "SELECT_PLANE") {
     const std::string_view p = arg0();
     if (p == "CANON_PLANE_XY")

@@ -32,6 +32,12 @@
 //    YZ -> (Y,Z,X), XZ -> (Z,X,Y); centre absolute (program frame); rot = +n CCW / -n CW seen
 //    from the positive normal (for XZ the (Z,X) order makes the normal +Y, so G2 in G18 prints
 //    -1), n-1 extra full turns; end == start is a full circle.
+//  * Rotary axes: STRAIGHT_TRAVERSE / STRAIGHT_FEED(x, y, z, a, b, c) and ARC_FEED's last three
+//    arguments are A B C in program coordinates, degrees under G20 too (measured: after G20,
+//    `G1 X1 B30` prints STRAIGHT_FEED(1.0000, 0.0000, 0.0000, 180.0000, 30.0000, 5.0000)); the
+//    machine angle adds the G92 and work offsets' a b c (`G92 A0` at A10 then `G1 A20` prints
+//    A 20.0000 and SET_G92_OFFSET(..., 10.0000, ...)) and the tool offset's, unrotated. The
+//    standalone rs274 is an XYZABC machine: it prints no U V W and rejects those words.
 //  * CHANGE_TOOL(n) prints the tool-table INDEX, not the tool number (T7 in pocket 3 as the
 //    first table entry prints CHANGE_TOOL(1)); the tool number is the preceding SELECT_TOOL(7).
 //  * M9 prints MIST_OFF() and FLOOD_OFF(): both become one Coolant(9) event.
@@ -71,15 +77,15 @@ bool splitCanonLine(std::string_view line, CanonCall& out);
 /// Streaming converter: feed it lines, collect events.
 ///
 /// Mapping: STRAIGHT_TRAVERSE -> Rapid, STRAIGHT_FEED -> Feed, ARC_FEED -> Arc (start = the
-/// previous end), DWELL -> Dwell (seconds), SET_SPINDLE_SPEED / START_SPINDLE_CLOCKWISE /
-/// START_SPINDLE_COUNTERCLOCKWISE / STOP_SPINDLE_TURNING -> Spindle (only when speed or
-/// direction changes; calls from one source line are merged into one event), CHANGE_TOOL ->
-/// ToolChange (tool number from the last SELECT_TOOL), FLOOD_ON/MIST_ON/FLOOD_OFF/MIST_OFF ->
-/// Coolant 8/7/9 (consecutive offs merged), PROGRAM_STOP / OPTIONAL_PROGRAM_STOP -> Stop,
-/// PROGRAM_END -> End, MESSAGE -> Message. SET_FEED_RATE / SET_FEED_MODE (per revolution)
-/// and START_SPEED_FEED_SYNC (pitch per rev) set the feed of later Feed/Arc events.
-/// RIGID_TAP, STRAIGHT_PROBE and inverse-time (G93) feeds are not modelled: they are
-/// reported in unsupported().
+/// previous end; their a b c arguments give extraEnd's A B C), DWELL -> Dwell (seconds),
+/// SET_SPINDLE_SPEED / START_SPINDLE_CLOCKWISE / START_SPINDLE_COUNTERCLOCKWISE /
+/// STOP_SPINDLE_TURNING -> Spindle (only when speed or direction changes; calls from one source
+/// line are merged into one event), CHANGE_TOOL -> ToolChange (tool number from the last
+/// SELECT_TOOL), FLOOD_ON/MIST_ON/FLOOD_OFF/MIST_OFF -> Coolant 8/7/9 (consecutive offs merged),
+/// PROGRAM_STOP / OPTIONAL_PROGRAM_STOP -> Stop, PROGRAM_END -> End, MESSAGE -> Message.
+/// SET_FEED_RATE / SET_FEED_MODE (per revolution) and START_SPEED_FEED_SYNC (pitch per rev) set the
+/// feed of later Feed/Arc events. RIGID_TAP, STRAIGHT_PROBE and inverse-time (G93) feeds are not
+/// modelled: they are reported in unsupported().
 class CanonReader {
 public:
   explicit CanonReader(CanonOptions options = {});
@@ -108,6 +114,8 @@ private:
   bool numbers(const CanonCall& c, std::size_t n, std::vector<double>& v, std::string_view text);
   motion::Event make(motion::Kind k, std::uint32_t line) const;
   void push(motion::Event e);
+  /// Sets e's A B C end (and the reader's) from program angles v[first..first+2], if present.
+  void rotaryTarget(const std::vector<double>& v, std::size_t first, motion::Event& e);
   void spindle(std::uint32_t line);
   void note(std::uint32_t line, std::string_view text, std::string_view why);
 
@@ -121,6 +129,11 @@ private:
   motion::Vec3 g5x_ = motion::Vec3::Zero();  // mm
   motion::Vec3 g92_ = motion::Vec3::Zero();  // mm
   motion::Vec3 tool_ = motion::Vec3::Zero(); // mm
+  // Rotary axes, degrees: the machine's A B C (U V W stay 0) and the offsets' a b c.
+  motion::Extra extra_ = motion::Extra::Zero();
+  motion::Vec3 g5xRotary_ = motion::Vec3::Zero();
+  motion::Vec3 g92Rotary_ = motion::Vec3::Zero();
+  motion::Vec3 toolRotary_ = motion::Vec3::Zero();
   double rotationDeg_ = 0;
   motion::Plane plane_ = motion::Plane::XY;
   double feed_ = 0; // mm/min or mm/rev

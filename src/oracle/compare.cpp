@@ -8,29 +8,45 @@
 namespace gcx::oracle {
 
 using motion::Event;
+using motion::Extra;
 using motion::Kind;
 using motion::Vec3;
 
 namespace {
+
+/// A point in axis space: X Y Z, then A B C U V W (degrees and mm mixed, as rs274 and nct.md
+/// §3.4 interpolate them).
+using Axes = Eigen::Matrix<double, 9, 1>;
+
+Axes axes(const Vec3& p, const Extra& x) {
+  Axes a;
+  a << p, x;
+  return a;
+}
 
 /// A normalised event: possibly several collinear input pieces merged.
 struct Item {
   Event e;
   std::size_t first = 0; // index range in the input list
   std::size_t last = 0;
-  std::vector<Vec3> interior; // joints of merged pieces
+  std::vector<Axes> interior; // joints of merged pieces
 };
 
-double maxDiff(const Vec3& a, const Vec3& b) {
+template <typename V> double maxDiff(const V& a, const V& b) {
   return (a - b).cwiseAbs().maxCoeff();
 }
 
-double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
+double distanceToSegment(const Axes& p, const Axes& a, const Axes& b) {
+  const Axes ab = b - a;
   const double len2 = ab.squaredNorm();
   if (len2 == 0) return (p - a).norm();
   const double t = std::clamp((p - a).dot(ab) / len2, 0.0, 1.0);
   return (p - (a + t * ab)).norm();
+}
+
+/// Whether a straight move moves no axis by more than the tolerance.
+bool zeroLength(const Event& e, double tol) {
+  return maxDiff(e.start, e.end) <= tol && maxDiff(e.extraStart, e.extraEnd) <= tol;
 }
 
 bool sameFeed(const Event& a, const Event& b, const CompareOptions& o) {
@@ -44,15 +60,19 @@ bool tryMerge(Item& it, const Event& e, const CompareOptions& o) {
                            : (e.kind != Kind::Rapid || !o.mergeCollinearRapids))
     return false;
   if (!sameFeed(it.e, e, o)) return false;
-  if (maxDiff(it.e.end, e.start) > o.tolerance) return false;
-  const Vec3 s = it.e.start, f = e.end;
-  const Vec3 dir = f - s;
-  if (dir.dot(it.e.end - it.e.start) <= 0 || dir.dot(e.end - e.start) <= 0) return false;
-  if (distanceToSegment(it.e.end, s, f) > o.tolerance) return false;
-  for (const Vec3& p : it.interior)
+  // Collinear in axis space, so pieces that turn a rotary axis merge only when it turns
+  // linearly along the whole line.
+  const Axes s = axes(it.e.start, it.e.extraStart), joint = axes(it.e.end, it.e.extraEnd);
+  const Axes from = axes(e.start, e.extraStart), f = axes(e.end, e.extraEnd);
+  if (maxDiff(joint, from) > o.tolerance) return false;
+  const Axes dir = f - s;
+  if (dir.dot(joint - s) <= 0 || dir.dot(f - from) <= 0) return false;
+  if (distanceToSegment(joint, s, f) > o.tolerance) return false;
+  for (const Axes& p : it.interior)
     if (distanceToSegment(p, s, f) > o.tolerance) return false;
-  it.interior.push_back(it.e.end);
-  it.e.end = f;
+  it.interior.push_back(joint);
+  it.e.end = e.end;
+  it.e.extraEnd = e.extraEnd;
   return true;
 }
 
@@ -62,7 +82,7 @@ std::vector<Item> normalise(const std::vector<Event>& in, const CompareOptions& 
     const Event& e = in[i];
     if (std::find(o.kinds.begin(), o.kinds.end(), e.kind) == o.kinds.end()) continue;
     if (o.dropZeroLength && (e.kind == Kind::Rapid || e.kind == Kind::Feed) &&
-        maxDiff(e.start, e.end) <= o.tolerance)
+        zeroLength(e, o.tolerance))
       continue;
     if (!out.empty() && tryMerge(out.back(), e, o)) {
       out.back().last = i;
@@ -88,6 +108,17 @@ const char* planeName(motion::Plane p) {
     return "G19";
   }
   return "?";
+}
+
+/// " A 0.0000 -> 90.0000" for each extra axis off zero at either end of a move.
+std::string fmtExtra(const Event& e) {
+  auto z = [](double d) { return std::abs(d) < 5e-5 ? 0.0 : d; };
+  std::string s;
+  for (int i = 0; i < 6; ++i)
+    if (e.extraStart[i] != 0 || e.extraEnd[i] != 0)
+      s += fmt::format(" {} {:.4f} -> {:.4f}", motion::kExtraAxisNames[i], z(e.extraStart[i]),
+                       z(e.extraEnd[i]));
+  return s;
 }
 
 std::string where(const Event& e, const SourceManager* sm) {
@@ -133,6 +164,15 @@ std::string mismatch(const Event& a, const Event& b, const CompareOptions& o) {
       return fmt::format("start points differ by {:.6f} mm (tolerance {})", d, tol);
     if (double d = maxDiff(a.end, b.end); d > tol)
       return fmt::format("end points differ by {:.6f} mm (tolerance {})", d, tol);
+    for (int i = 0; i < 6; ++i) {
+      const char* unit = i < 3 ? "deg" : "mm";
+      const char name = motion::kExtraAxisNames[i];
+      if (double d = std::abs(a.extraStart[i] - b.extraStart[i]); d > tol)
+        return fmt::format("{} at the start differs by {:.6f} {} (tolerance {})", name, d, unit,
+                           tol);
+      if (double d = std::abs(a.extraEnd[i] - b.extraEnd[i]); d > tol)
+        return fmt::format("{} at the end differs by {:.6f} {} (tolerance {})", name, d, unit, tol);
+    }
     if (a.kind == Kind::Arc) {
       if (a.plane != b.plane)
         return fmt::format("arc planes differ: {} vs {}", planeName(a.plane), planeName(b.plane));
@@ -175,6 +215,13 @@ std::string mismatch(const Event& a, const Event& b, const CompareOptions& o) {
   case Kind::Message:
     if (a.text != b.text) return "message texts differ";
     return {};
+  case Kind::PlaneChange:
+    if (a.plane != b.plane || a.text != b.text) return "planes differ";
+    return {};
+  case Kind::UnitsChange:
+  case Kind::FeedModeChange:
+    if (a.value != b.value) return "codes differ";
+    return {};
   }
   return {};
 }
@@ -205,6 +252,12 @@ const char* kindName(Kind k) {
     return "End";
   case Kind::Message:
     return "Message";
+  case Kind::PlaneChange:
+    return "PlaneChange";
+  case Kind::UnitsChange:
+    return "UnitsChange";
+  case Kind::FeedModeChange:
+    return "FeedModeChange";
   }
   return "?";
 }
@@ -213,13 +266,13 @@ std::string describe(const Event& e) {
   const std::string feed = fmt::format(" F{}{}", e.feed, e.perRevolution ? "/rev" : "");
   switch (e.kind) {
   case Kind::Rapid:
-    return fmt::format("Rapid {} -> {}", fmtVec(e.start), fmtVec(e.end));
+    return fmt::format("Rapid {} -> {}{}", fmtVec(e.start), fmtVec(e.end), fmtExtra(e));
   case Kind::Feed:
-    return fmt::format("Feed {} -> {}{}", fmtVec(e.start), fmtVec(e.end), feed);
+    return fmt::format("Feed {} -> {}{}{}", fmtVec(e.start), fmtVec(e.end), fmtExtra(e), feed);
   case Kind::Arc: {
-    std::string s =
-        fmt::format("Arc {} {} {} -> {} centre {}", planeName(e.plane), e.clockwise ? "CW" : "CCW",
-                    fmtVec(e.start), fmtVec(e.end), fmtVec(e.center));
+    std::string s = fmt::format("Arc {} {} {} -> {}{} centre {}", planeName(e.plane),
+                                e.clockwise ? "CW" : "CCW", fmtVec(e.start), fmtVec(e.end),
+                                fmtExtra(e), fmtVec(e.center));
     if (e.turns != 0) s += fmt::format(" +{} turns", e.turns);
     if (std::abs(e.startRadius - e.endRadius) > 5e-5) // spiral, not 4-decimal rounding
       s += fmt::format(" r {:.4f} -> {:.4f}", e.startRadius, e.endRadius);
@@ -246,6 +299,12 @@ std::string describe(const Event& e) {
     return "End";
   case Kind::Message:
     return fmt::format("Message \"{}\"", e.text);
+  case Kind::PlaneChange:
+    return fmt::format("PlaneChange {}{}{}", planeName(e.plane), e.text.empty() ? "" : " ", e.text);
+  case Kind::UnitsChange:
+    return fmt::format("UnitsChange G{}", e.value);
+  case Kind::FeedModeChange:
+    return fmt::format("FeedModeChange G{}", e.value);
   }
   return "?";
 }

@@ -29,6 +29,18 @@ inline Event arc(Plane plane, Vec3 from, Vec3 to, Vec3 centre, bool cw, int turn
   return e;
 }
 
+/// A B C (degrees) and U V W (mm).
+inline Extra extra(double a, double b, double c, double u = 0, double v = 0, double w = 0) {
+  Extra x;
+  x << a, b, c, u, v, w;
+  return x;
+}
+inline Event withExtra(Event e, const Extra& from, const Extra& to) {
+  e.extraStart = from;
+  e.extraEnd = to;
+  return e;
+}
+
 inline Event valueEvent(Kind kind, double value, bool perRevolution = false) {
   Event e;
   e.kind = kind;

@@ -112,5 +112,26 @@ TEST(ArcLinearizer, TurnsArcsIntoContinuousFeedsAndPassesTheRestThrough) {
   EXPECT_TRUE(out.finished);
 }
 
+TEST(ArcLinearizer, InterpolatesTheExtraAxesLinearly) {
+  Collect out;
+  ArcLinearizer lin(out, 0.01);
+  const Event a = test::withExtra(test::arc(Plane::XY, {10, 0, 0}, {-10, 0, 0}, {0, 0, 0}, false),
+                                  test::extra(0, 10, 0), test::extra(90, 10, 0, 0, 0, -4));
+  lin.event(a);
+  const std::size_t n = arcSegments(ArcGeometry(a), 0.01);
+  ASSERT_EQ(out.events.size(), n);
+  Extra prev = a.extraStart;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Event& e = out.events[i];
+    const double t = static_cast<double>(i + 1) / static_cast<double>(n);
+    EXPECT_EQ(e.extraStart, prev);
+    EXPECT_NEAR(e.extraEnd[0], 90 * t, 1e-12);
+    EXPECT_EQ(e.extraEnd[1], 10);
+    EXPECT_NEAR(e.extraEnd[5], -4 * t, 1e-12);
+    prev = e.extraEnd;
+  }
+  EXPECT_EQ(prev, a.extraEnd); // exactly
+}
+
 } // namespace
 } // namespace gcx::motion

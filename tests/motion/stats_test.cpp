@@ -1,5 +1,6 @@
 #include "motion/stats.h"
 
+#include <cmath>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -85,6 +86,7 @@ TEST(Stats, JsonAndReport) {
     c.event(e);
   const nlohmann::json j = toJson(c.stats());
   EXPECT_EQ(j["moves"]["feed"], 3);
+  EXPECT_EQ(j["moves"]["rotary"], 0);
   EXPECT_EQ(j["length_mm"]["rapid"], 50.0);
   EXPECT_EQ(j["length_mm"]["arc"], 15.707963);
   EXPECT_EQ(j["time_s"]["dwell"], 2.3);
@@ -104,6 +106,49 @@ TEST(Stats, JsonAndReport) {
       << r;
 
   EXPECT_TRUE(toJson(Stats{})["bounds"].is_null());
+}
+
+TEST(Stats, RotaryOnlyMovesTakeAngleOverFeed) {
+  StatsCollector c;
+  Event perRev = withExtra(feed({10, 0, 0}, {10, 0, 0}, 2), extra(90, 0, 0), extra(90, 30, 40));
+  perRev.perRevolution = true;
+  Event plane = valueEvent(Kind::PlaneChange, 0);
+  plane.plane = Plane::ZX;
+  for (const Event& e : {
+           spindle(600, 1),
+           withExtra(rapid({0, 0, 0}, {0, 0, 0}), Extra::Zero(), extra(-45, 0, 0)), // no time
+           withExtra(feed({0, 0, 0}, {0, 0, 0}, 120), extra(-45, 0, 0),
+                     extra(90, 0, 0)), // 135°: 67.5 s
+           withExtra(feed({0, 0, 0}, {10, 0, 0}, 100), extra(90, 0, 0), extra(90, 0, 0)), // 6 s
+           plane,
+           valueEvent(Kind::UnitsChange, 20),
+           valueEvent(Kind::FeedModeChange, 95),
+           perRev, // |(0, 30, 40)| = 50° at 2°/rev · 600 rpm: 2.5 s
+           // X and A together: the time follows the X Y Z length (6 s); not rotary only
+           withExtra(feed({10, 0, 0}, {20, 0, 0}, 100), extra(90, 30, 40), extra(0, 30, 40)),
+           // U V W moved too: not rotary only, |(10°, 5 mm)| / F = 6.708204 s
+           withExtra(feed({20, 0, 0}, {20, 0, 0}, 100), extra(0, 30, 40),
+                     extra(10, 30, 40, 0, 0, 5)),
+       })
+    c.event(e);
+  const Stats& s = c.stats();
+  EXPECT_EQ(s.rapidMoves, 1u);
+  EXPECT_EQ(s.feedMoves, 5u);
+  EXPECT_EQ(s.rotaryMoves, 3u);
+  EXPECT_EQ(s.rapidLength, 0);
+  EXPECT_NEAR(s.feedLength, 20, 1e-12);
+  EXPECT_EQ(s.rapidSeconds, 0);
+  EXPECT_NEAR(s.feedSeconds, 67.5 + 6 + 2.5 + 6 + std::sqrt(125.0) * 0.6, 1e-12);
+  EXPECT_EQ(s.untimed, 0u);
+  EXPECT_EQ(toJson(s)["moves"]["rotary"], 3);
+  const std::string r = formatReport(s);
+  EXPECT_NE(r.find("moves         rapid 1, feed 5, arc 0 (3 rotary only)\n"), std::string::npos)
+      << r;
+  EXPECT_EQ(formatReport(Stats{}).find("rotary"), std::string::npos);
+
+  StatsCollector f0;
+  f0.event(withExtra(feed({0, 0, 0}, {0, 0, 0}, 0), Extra::Zero(), extra(0, 0, 90)));
+  EXPECT_EQ(f0.stats().untimed, 1u);
 }
 
 } // namespace

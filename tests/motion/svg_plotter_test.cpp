@@ -168,5 +168,22 @@ TEST(SvgPlotter, ArcsAreSampled) {
   EXPECT_EQ(count(paths[0], " "), 4u + 2 * 50) << paths[0];
 }
 
+TEST(SvgPlotter, ModalChangesAndRotaryOnlyMovesDoNotBreakRuns) {
+  const std::vector<Event> plain = {rapid({0, 0, 5}, {0, 0, 0}), feed({0, 0, 0}, {10, 0, 0}),
+                                    feed({10, 0, 0}, {10, 10, 0})};
+  Event zx = valueEvent(Kind::PlaneChange, 0);
+  zx.plane = Plane::ZX;
+  const std::vector<Event> mixed = {
+      valueEvent(Kind::UnitsChange, 20),
+      rapid({0, 0, 5}, {0, 0, 0}),
+      feed({0, 0, 0}, {10, 0, 0}),
+      zx,
+      valueEvent(Kind::FeedModeChange, 95),
+      withExtra(feed({10, 0, 0}, {10, 0, 0}), Extra::Zero(), extra(90, 0, 0)),
+      withExtra(feed({10, 0, 0}, {10, 10, 0}), extra(90, 0, 0), extra(90, 0, 0)),
+  };
+  EXPECT_EQ(plot(mixed), plot(plain));
+}
+
 } // namespace
 } // namespace gcx::motion

@@ -93,5 +93,46 @@ TEST(TraceWriter, OtherKinds) {
   EXPECT_EQ(w.line(end), "{\"kind\":\"end\"}");
 }
 
+TEST(TraceWriter, ExtraAxesOnlyWhenOffZero) {
+  std::ostringstream out;
+  TraceWriter w(out);
+  // all zero: the line is the same as without extra axes
+  EXPECT_EQ(w.line(withExtra(feed({0, 0, 0}, {1, 0, 0}, 100), Extra::Zero(), Extra::Zero())),
+            "{\"kind\":\"feed\",\"start\":[0,0,0],\"end\":[1,0,0],\"feed\":100}");
+  EXPECT_EQ(w.line(withExtra(feed({1, 0, 0}, {1, 0, 0}, 720), Extra::Zero(), extra(90, 0, 0))),
+            "{\"kind\":\"feed\",\"start\":[1,0,0],\"end\":[1,0,0],"
+            "\"extra_start\":{\"A\":0},\"extra_end\":{\"A\":90},\"feed\":720}");
+  // the axes off zero at either end, both objects alike, U V W after A B C
+  EXPECT_EQ(w.line(withExtra(rapid({1, 0, 0}, {2, 0, 0}), extra(90, 0, 0, 0, 0, 2.5),
+                             extra(0, 0, 1.0 / 3, 0, 0, 2.5))),
+            "{\"kind\":\"rapid\",\"start\":[1,0,0],\"end\":[2,0,0],"
+            "\"extra_start\":{\"A\":90,\"C\":0,\"W\":2.5},"
+            "\"extra_end\":{\"A\":0,\"C\":0.333333,\"W\":2.5}}");
+  // arcs: after the end, before the arc's own keys
+  EXPECT_EQ(w.line(withExtra(arc(Plane::XY, {10, 0, 0}, {0, 10, 0}, {0, 0, 0}, true),
+                             extra(0, 5, 0), extra(0, -5, 0))),
+            "{\"kind\":\"arc\",\"start\":[10,0,0],\"end\":[0,10,0],"
+            "\"extra_start\":{\"B\":5},\"extra_end\":{\"B\":-5},\"center\":[0,0,0],"
+            "\"plane\":\"XY\",\"dir\":\"cw\",\"turns\":0,\"feed\":100}");
+  // non-motion events carry the position but do not write it
+  Event dwell = withExtra(valueEvent(Kind::Dwell, 1), extra(45, 0, 0), extra(45, 0, 0));
+  EXPECT_EQ(w.line(dwell), "{\"kind\":\"dwell\",\"seconds\":1}");
+}
+
+TEST(TraceWriter, ModalChanges) {
+  std::ostringstream out;
+  TraceWriter w(out, fileName);
+  Event zx = valueEvent(Kind::PlaneChange, 0);
+  zx.plane = Plane::ZX;
+  zx.from.at = SourceLoc{0, 5, 1, 0};
+  Event uv = valueEvent(Kind::PlaneChange, 0);
+  uv.text = "UV";
+  EXPECT_EQ(w.line(zx), "{\"kind\":\"plane\",\"plane\":\"ZX\",\"at\":\"main.nct:5:1\"}");
+  EXPECT_EQ(w.line(uv), "{\"kind\":\"plane\",\"plane\":\"XY\",\"axes\":\"UV\"}");
+  EXPECT_EQ(w.line(valueEvent(Kind::UnitsChange, 20)), "{\"kind\":\"units\",\"code\":20}");
+  EXPECT_EQ(w.line(valueEvent(Kind::FeedModeChange, 95)), "{\"kind\":\"feed_mode\",\"code\":95}");
+  EXPECT_STREQ(kindName(Kind::FeedModeChange), "feed_mode");
+}
+
 } // namespace
 } // namespace gcx::motion

@@ -382,5 +382,77 @@ TEST(Canon, HelixAndRotatedArcCentres) {
   EXPECT_EQ(ev[1].from.at.file, 3u);
 }
 
+// Verbatim rs274 output for (each line numbered N1..N14):
+//   G21 G90 G17 / G0 X0 Y0 Z0 A10 / G1 X10 B5 C-3 F100 / G2 X-10 Y0 I-10 J0 A180 F200 /
+//   G92 A0 / G1 A20 / G10 L2 P1 A5 / G1 A30 / G20 / G1 X1 B30 / G21 / G92.1 / G0 A0 / M2
+const char* const kRotary = R"(    1 N..... USE_LENGTH_UNITS(CANON_UNITS_MM)
+    2 N..... SET_G5X_OFFSET(1, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)
+    3 N..... SET_G92_OFFSET(0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)
+    4 N..... SET_XY_ROTATION(0.0000)
+    5 N..... SET_FEED_REFERENCE(CANON_XYZ)
+    6 N..... ON_RESET()
+    7 N1     SELECT_PLANE(CANON_PLANE_XY)
+    8 N1     USE_LENGTH_UNITS(CANON_UNITS_MM)
+    9 N2     STRAIGHT_TRAVERSE(0.0000, 0.0000, 0.0000, 10.0000, 0.0000, 0.0000)
+   10 N3     SET_FEED_RATE(100.0000)
+   11 N3     STRAIGHT_FEED(10.0000, 0.0000, 0.0000, 10.0000, 5.0000, -3.0000)
+   12 N4     SET_FEED_RATE(200.0000)
+   13 N4     ARC_FEED(-10.0000, 0.0000, 0.0000, 0.0000, -1, 0.0000, 180.0000, 5.0000, -3.0000)
+   14 N5     SET_G92_OFFSET(0.0000, 0.0000, 0.0000, 180.0000, 0.0000, 0.0000)
+   15 N6     STRAIGHT_FEED(-10.0000, 0.0000, 0.0000, 20.0000, 5.0000, -3.0000)
+   16 N7     SET_G5X_OFFSET(1, 0.0000, 0.0000, 0.0000, 5.0000, 0.0000, 0.0000)
+   17 N7     SET_XY_ROTATION(0.0000)
+   18 N8     STRAIGHT_FEED(-10.0000, 0.0000, 0.0000, 30.0000, 5.0000, -3.0000)
+   19 N9     USE_LENGTH_UNITS(CANON_UNITS_INCHES)
+   20 N10    STRAIGHT_FEED(1.0000, 0.0000, 0.0000, 30.0000, 30.0000, -3.0000)
+   21 N11    USE_LENGTH_UNITS(CANON_UNITS_MM)
+   22 N12    SET_G92_OFFSET(0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)
+   23 N13    STRAIGHT_TRAVERSE(25.4000, 0.0000, 0.0000, 0.0000, 30.0000, -3.0000)
+   24 N14    SET_G5X_OFFSET(1, 0.0000, 0.0000, 0.0000, 5.0000, 0.0000, 0.0000)
+   25 N14    SET_XY_ROTATION(0.0000)
+   26 N14    SET_FEED_MODE(0, 0)
+   27 N14    SET_FEED_RATE(0.0000)
+   28 N14    STOP_SPINDLE_TURNING(0)
+   29 N14    SET_SPINDLE_MODE(0 0.0000)
+   30 N14    PROGRAM_END()
+   31 N..... ON_RESET()
+   32 N..... ON_RESET()
+)";
+
+TEST(Canon, RotaryAxesInDegreesWithTheirOffsets) {
+  const std::vector<Event> ev = parseCanonText(kRotary);
+  ASSERT_EQ(ev.size(), 8u);
+  using E = motion::Extra;
+  auto abc = [](double a, double b, double c) { return E((E() << a, b, c, 0, 0, 0).finished()); };
+  const std::vector<std::pair<E, E>> want = {
+      {abc(0, 0, 0), abc(10, 0, 0)},       // N2
+      {abc(10, 0, 0), abc(10, 5, -3)},     // N3
+      {abc(10, 5, -3), abc(180, 5, -3)},   // N4: the arc turns A too
+      {abc(180, 5, -3), abc(200, 5, -3)},  // N6: A20 + G92 180
+      {abc(200, 5, -3), abc(215, 5, -3)},  // N8: A30 + G92 180 + G54 5
+      {abc(215, 5, -3), abc(215, 30, -3)}, // N10: degrees under G20 too
+      {abc(215, 30, -3), abc(5, 30, -3)},  // N13: A0 + G54 5 after G92.1
+  };
+  for (std::size_t i = 0; i < want.size(); ++i) {
+    EXPECT_EQ(ev[i].extraStart, want[i].first)
+        << "event " << i << ": " << ev[i].extraStart.transpose();
+    EXPECT_EQ(ev[i].extraEnd, want[i].second)
+        << "event " << i << ": " << ev[i].extraEnd.transpose();
+  }
+  expectArc(ev, 2, Plane::XY, true, 0, Vec3(10, 0, 0), Vec3(-10, 0, 0), Vec3(0, 0, 0), 10, 200);
+  expectMove(ev, 5, Kind::Feed, 10, Vec3(-10, 0, 0), Vec3(25.4, 0, 0), 200);
+  EXPECT_EQ(ev[7].kind, Kind::End);
+  EXPECT_EQ(ev[7].extraStart, abc(5, 30, -3)); // non-motion events carry the position
+
+  // Without a b c arguments the rotary axes stay where they are.
+  CanonReader r;
+  r.line("    1 N1     STRAIGHT_FEED(0.0000, 0.0000, 0.0000, 45.0000, 0.0000, 0.0000)");
+  r.line("    2 N2     STRAIGHT_FEED(1.0000, 0.0000, 0.0000)");
+  ASSERT_EQ(r.events().size(), 2u);
+  EXPECT_EQ(r.events()[1].extraStart, abc(45, 0, 0));
+  EXPECT_EQ(r.events()[1].extraEnd, abc(45, 0, 0));
+  EXPECT_TRUE(r.unsupported().empty());
+}
+
 } // namespace
 } // namespace gcx::oracle

@@ -193,5 +193,87 @@ TEST(Compare, OneSideLonger) {
   EXPECT_NE(r.report.find("gcx ended, rs274 has 1 more event(s)"), std::string::npos) << r.report;
 }
 
+motion::Extra angles(double a, double b = 0, double c = 0) {
+  motion::Extra x = motion::Extra::Zero();
+  x.head<3>() = Vec3(a, b, c);
+  return x;
+}
+
+Event turning(Event e, const motion::Extra& from, const motion::Extra& to) {
+  e.extraStart = from;
+  e.extraEnd = to;
+  return e;
+}
+
+TEST(Compare, ExtraAxesWithinTolerance) {
+  const std::vector<Event> a = {
+      turning(move(Kind::Feed, {0, 0, 0}, {0, 0, 0}, 1), angles(0), angles(90)), // rotary only
+      turning(move(Kind::Feed, {0, 0, 0}, {10, 0, 0}, 2), angles(90), angles(90, 0, 45)),
+  };
+  std::vector<Event> b = a;
+  b[0].extraEnd[0] += 0.00005;
+  b[1].extraStart[0] += 0.00005;
+  EXPECT_TRUE(compareEvents(a, b).equivalent);
+  b[1].extraEnd[2] += 0.001;
+  CompareResult r = compareEvents(a, b);
+  EXPECT_FALSE(r.equivalent);
+  EXPECT_EQ(r.leftIndex, 1u);
+  EXPECT_NE(r.report.find("C at the end differs by 0.001000 deg (tolerance 0.0001)"),
+            std::string::npos)
+      << r.report;
+  EXPECT_NE(r.report.find("C 0.0000 -> 45.0000"), std::string::npos) << r.report;
+
+  // a move of W alone is not zero-length, and U V W are compared in mm
+  std::vector<Event> w = {move(Kind::Feed, {0, 0, 0}, {0, 0, 0}, 1)};
+  w[0].extraEnd[5] = 5;
+  r = compareEvents(w, {});
+  EXPECT_FALSE(r.equivalent);
+  std::vector<Event> w2 = w;
+  w2[0].extraEnd[5] = 4;
+  r = compareEvents(w, w2);
+  EXPECT_NE(r.report.find("W at the end differs by 1.000000 mm"), std::string::npos) << r.report;
+}
+
+TEST(Compare, CollinearMergingIncludesTheExtraAxes) {
+  const std::vector<Event> one = {
+      turning(move(Kind::Feed, {0, 0, 0}, {10, 0, 0}, 1), angles(0), angles(90))};
+  // A turning linearly along the line: one move
+  const std::vector<Event> linear = {
+      turning(move(Kind::Feed, {0, 0, 0}, {4, 0, 0}, 1), angles(0), angles(36)),
+      turning(move(Kind::Feed, {4, 0, 0}, {10, 0, 0}, 1), angles(36), angles(90))};
+  EXPECT_TRUE(compareEvents(one, linear).equivalent);
+  EXPECT_TRUE(compareEvents(linear, one).equivalent);
+  // A turning first and X moving afterwards is not the same move
+  const std::vector<Event> stepped = {
+      turning(move(Kind::Feed, {0, 0, 0}, {0, 0, 0}, 1), angles(0), angles(90)),
+      turning(move(Kind::Feed, {0, 0, 0}, {10, 0, 0}, 1), angles(90), angles(90))};
+  EXPECT_FALSE(compareEvents(one, stepped).equivalent);
+}
+
+TEST(Compare, ModalChangesOnlyWhenAsked) {
+  Event zx = other(Kind::PlaneChange, 0, 1);
+  zx.plane = Plane::ZX;
+  Event uv = other(Kind::PlaneChange, 0, 1);
+  uv.text = "UV";
+  std::vector<Event> a = sample(), b = sample();
+  a.insert(a.begin(), {zx, other(Kind::UnitsChange, 20, 1), other(Kind::FeedModeChange, 95, 1)});
+  EXPECT_TRUE(compareEvents(a, b).equivalent);
+
+  CompareOptions modal;
+  modal.kinds = {Kind::PlaneChange, Kind::UnitsChange, Kind::FeedModeChange};
+  b = {zx, other(Kind::UnitsChange, 20, 1), other(Kind::FeedModeChange, 95, 1)};
+  EXPECT_TRUE(compareEvents(a, b, modal).equivalent);
+  b[0] = uv;
+  CompareResult r = compareEvents(a, b, modal);
+  EXPECT_NE(r.report.find("planes differ"), std::string::npos) << r.report;
+  EXPECT_NE(r.report.find("PlaneChange G18"), std::string::npos) << r.report;
+  EXPECT_NE(r.report.find("PlaneChange G17 UV"), std::string::npos) << r.report;
+  b = {zx, other(Kind::UnitsChange, 21, 1), other(Kind::FeedModeChange, 95, 1)};
+  r = compareEvents(a, b, modal);
+  EXPECT_NE(r.report.find("codes differ"), std::string::npos) << r.report;
+  EXPECT_NE(r.report.find("UnitsChange G21"), std::string::npos) << r.report;
+  EXPECT_EQ(describe(other(Kind::FeedModeChange, 94, 1)), "FeedModeChange G94");
+}
+
 } // namespace
 } // namespace gcx::oracle

@@ -39,7 +39,13 @@ std::string n4(double v) {
 }
 
 std::string describe(const motion::Event& e) {
-  auto p = [](const motion::Vec3& v) { return n4(v.x()) + "," + n4(v.y()) + "," + n4(v.z()); };
+  auto p = [&](const motion::Vec3& v) {
+    std::string s = n4(v.x()) + "," + n4(v.y()) + "," + n4(v.z());
+    for (int i = 0; i < 6; ++i) // extra axes that are not zero or that moved
+      if (e.extraEnd[i] != 0 || e.extraStart[i] != e.extraEnd[i])
+        s += std::string(" ") + motion::kExtraAxisNames[i] + n4(e.extraEnd[i]);
+    return s;
+  };
   switch (e.kind) {
   case motion::Kind::Rapid:
     return "R " + p(e.end);
@@ -70,11 +76,33 @@ std::string describe(const motion::Event& e) {
     return "END";
   case motion::Kind::Message:
     return "MSG " + e.text;
+  case motion::Kind::PlaneChange: {
+    static const char* const names[] = {"XY", "ZX", "YZ"};
+    return "PLANE " + (e.text.empty() ? std::string(names[static_cast<int>(e.plane)]) : e.text);
+  }
+  case motion::Kind::UnitsChange:
+    return "UNITS G" + n4(e.value);
+  case motion::Kind::FeedModeChange:
+    return "FEEDMODE G" + n4(e.value);
   }
   return "?";
 }
 
+namespace {
+bool isModalChange(const motion::Event& e) {
+  return e.kind == motion::Kind::PlaneChange || e.kind == motion::Kind::UnitsChange ||
+         e.kind == motion::Kind::FeedModeChange;
+}
+} // namespace
+
 std::vector<std::string> ProgramRun::motion() const {
+  std::vector<std::string> out;
+  for (const motion::Event& e : events)
+    if (!isModalChange(e)) out.push_back(describe(e));
+  return out;
+}
+
+std::vector<std::string> ProgramRun::all() const {
   std::vector<std::string> out;
   for (const motion::Event& e : events)
     out.push_back(describe(e));

@@ -17,7 +17,8 @@ struct ProgramRun {
   motion::Vec3 program = motion::Vec3::Zero(); // programmed position at the end (work frame)
   std::vector<std::string> errors;             // "line:col CODE"
   std::string rendered;
-  std::vector<std::string> motion() const; // descriptions of the events
+  std::vector<std::string> motion() const; // descriptions of the events, modal changes left out
+  std::vector<std::string> all() const;    // every event, modal changes included
 };
 
 /// Runs text through the NCT front end, static checks and interpreter; events also go to

@@ -1,0 +1,52 @@
+// Evaluation of macro expressions and conditions (nct-macro.md §2.5, §3): binary64 arithmetic,
+// vacant rules, bitwise operations on 32 bits, functions in degrees, domain errors.
+#pragma once
+#include <optional>
+
+#include "diag/diagnostic.h"
+#include "ir/expr.h"
+#include "passes/macro/value.h"
+
+namespace gcx::macro {
+
+/// §2.5 rule 3: EQ/NE see vacancy; GT GE LT LE order a vacant operand as 0⁺ (above every
+/// number <= 0, below every number > 0, equal to another vacant).
+bool compare(const Value& lhs, ir::RelOp op, const Value& rhs);
+
+/// Rounds half away from zero (§2.2 indirect numbers, §2.6 integer addresses).
+double roundHalfAway(double v);
+
+class Evaluator {
+public:
+  Evaluator(VariableAccess& vars, diag::Engine& diags) : vars_(vars), diags_(diags) {}
+
+  /// The value of e; vacant only for a bare variable reference, possibly in brackets (§2.5
+  /// rule 1). nullopt after an error was reported at the offending expression.
+  std::optional<Value> value(const ir::Expr& e);
+  /// The value of e with vacant read as 0 (AX[e], bracketed address values). Where vacancy
+  /// matters (GOTO#1 is 2125, §2.5 rule 5) use value().
+  std::optional<double> number(const ir::Expr& e);
+  std::optional<bool> condition(const ir::Condition& c);
+  /// The number n of an assignment target `#n` or `#[e]` (e rounded half away from zero).
+  std::optional<int> variableNumber(const ir::Expr& target);
+  /// e as a variable number or symbolic index: vacant = 0, rounded half away from zero (§2.2);
+  /// NCTX01 if it is no int.
+  std::optional<int> index(const ir::Expr& e);
+
+  diag::Engine& diags() { return diags_; }
+
+private:
+  std::optional<Value> unary(const ir::Expr& e);
+  std::optional<Value> binary(const ir::Expr& e);
+  std::optional<Value> call(const ir::Expr& e);
+  std::optional<Value> parameter(const ir::Expr& e);
+  std::optional<Value> named(const ir::Expr& e);
+  std::optional<int> integer(double v, const ir::Expr& where, const char* code, const char* what);
+  bool bitRange(double v, const ir::Expr& operand);
+  void error(const char* code, const ir::Expr& where, std::string message);
+
+  VariableAccess& vars_;
+  diag::Engine& diags_;
+};
+
+} // namespace gcx::macro

@@ -1,0 +1,121 @@
+#include "passes/macro/program_library.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+
+#include "diag/codes.h"
+#include "passes/check/static_checks.h"
+
+namespace gcx::macro {
+
+namespace fs = std::filesystem;
+
+std::size_t LoadedProgram::find(std::int64_t n, std::size_t from) const {
+  auto it = labels.find(n);
+  if (it == labels.end()) return npos;
+  for (std::size_t i : it->second)
+    if (i >= from) return i;
+  return it->second.front();
+}
+
+ProgramLibrary::ProgramLibrary(const Dialect& dialect, SourceManager& sources, diag::Engine& diags,
+                               std::vector<std::string> libraryDirs)
+    : dialect_(dialect), sources_(sources), diags_(diags), libraryDirs_(std::move(libraryDirs)) {}
+
+const LoadedProgram* ProgramLibrary::load(const std::string& path) {
+  std::error_code ec;
+  const std::string key = fs::weakly_canonical(path, ec).string();
+  if (auto it = loaded_.find(key); it != loaded_.end()) return it->second.get();
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    diags_.error(diag::code::CannotRead, {}, fmt::format("{}: cannot open", path));
+    return nullptr;
+  }
+  auto prog = std::make_unique<LoadedProgram>();
+  prog->path = path;
+  prog->file = sources_.addFile(path);
+  const std::size_t errorsBefore = diags_.errorCount();
+  auto source = dialect_.open(in, prog->file, diags_);
+  check::StaticChecker checker(dialect_.profile(), diags_);
+  ir::Block b;
+  while (source->next(b)) {
+    checker.block(b);
+    prog->blocks.push_back(b);
+  }
+  checker.finish(prog->file, source->failedBlocks() > 0);
+  if (diags_.errorCount() != errorsBefore) return nullptr;
+  // labels and the static loop pairs (the checker has already rejected unpaired loops)
+  prog->loopPartner.assign(prog->blocks.size(), LoadedProgram::npos);
+  std::vector<std::size_t> open;
+  for (std::size_t i = 0; i < prog->blocks.size(); ++i) {
+    const ir::Block& blk = prog->blocks[i];
+    if (blk.sequence && blk.kind == ir::BlockKind::Normal) prog->labels[*blk.sequence].push_back(i);
+    if (!blk.stmt) continue;
+    const ir::StmtKind k = blk.stmt->kind;
+    if (k == ir::StmtKind::While || k == ir::StmtKind::Do) open.push_back(i);
+    if (k == ir::StmtKind::End) {
+      for (auto it = open.rbegin(); it != open.rend(); ++it)
+        if (prog->blocks[*it].stmt->loopId == blk.stmt->loopId) {
+          prog->loopPartner[*it] = i;
+          prog->loopPartner[i] = *it;
+          open.erase(std::next(it).base());
+          break;
+        }
+    }
+  }
+  const LoadedProgram* result = prog.get();
+  loaded_.emplace(key, std::move(prog));
+  return result;
+}
+
+const LoadedProgram* ProgramLibrary::findFile(const std::vector<std::string>& candidates,
+                                              const LoadedProgram& caller, const SourceRange& where,
+                                              const std::string& what) {
+  std::vector<fs::path> dirs{fs::path(caller.path).parent_path()};
+  for (const std::string& d : libraryDirs_)
+    dirs.emplace_back(d);
+  for (const fs::path& dir : dirs) {
+    for (const std::string& name : candidates) {
+      const fs::path direct = dir / name;
+      std::error_code ec;
+      if (fs::is_regular_file(direct, ec)) return load(direct.string());
+      // the controls' file systems ignore case: O0011.NCT finds o0011.nct
+      const fs::path folder = (dir / name).parent_path();
+      const std::string leaf = fs::path(name).filename().string();
+      if (!fs::is_directory(folder, ec)) continue;
+      for (const auto& entry : fs::directory_iterator(folder, ec)) {
+        const std::string f = entry.path().filename().string();
+        if (f.size() == leaf.size() &&
+            std::equal(f.begin(), f.end(), leaf.begin(), [](char a, char b) {
+              return std::tolower(static_cast<unsigned char>(a)) ==
+                     std::tolower(static_cast<unsigned char>(b));
+            }))
+          return load(entry.path().string());
+      }
+    }
+  }
+  diags_.error(diag::code::ProgramNotFound, where,
+               fmt::format("program {} not found next to {} or in the library folders", what,
+                           fs::path(caller.path).filename().string()));
+  return nullptr;
+}
+
+const LoadedProgram* ProgramLibrary::byNumber(std::int64_t number, const LoadedProgram& caller,
+                                              const SourceRange& where) {
+  const std::string ext = fs::path(caller.path).extension().string();
+  std::vector<std::string> names;
+  if (number >= 0 && number <= 9999) names.push_back(fmt::format("O{:04}{}", number, ext));
+  if (number >= 0 && number <= 99999999) names.push_back(fmt::format("O{:08}{}", number, ext));
+  return findFile(names, caller, where, fmt::format("O{:04}{}", number, ext));
+}
+
+const LoadedProgram* ProgramLibrary::byName(const std::string& name, const LoadedProgram& caller,
+                                            const SourceRange& where) {
+  std::string path = name;
+  std::replace(path.begin(), path.end(), '\\', '/'); // the manual's paths use backslashes
+  return findFile({path}, caller, where, "<" + name + ">");
+}
+
+} // namespace gcx::macro

@@ -1,0 +1,57 @@
+// The program files a run needs, loaded whole (jumps and calls need random access): the main
+// program, subprograms and macros found by number or by file name (nct.md §5.1,
+// nct-macro.md §5.1), each parsed and statically checked once.
+#pragma once
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "diag/diagnostic.h"
+#include "dialect/dialect.h"
+#include "ir/block.h"
+
+namespace gcx::macro {
+
+struct LoadedProgram {
+  FileId file = 0;
+  std::string path;
+  std::vector<ir::Block> blocks;
+  /// Block number -> indices of the blocks carrying it as their first N, in file order.
+  std::unordered_map<std::int64_t, std::vector<std::size_t>> labels;
+  /// For each DO/WHILE block its END block and the reverse (nct-macro.md §4.5); npos: none.
+  std::vector<std::size_t> loopPartner;
+  static constexpr std::size_t npos = static_cast<std::size_t>(-1);
+
+  /// The block labelled n, searched from `from` to the end, then from the start (§4.1 G5).
+  std::size_t find(std::int64_t n, std::size_t from) const;
+};
+
+class ProgramLibrary {
+public:
+  ProgramLibrary(const Dialect& dialect, SourceManager& sources, diag::Engine& diags,
+                 std::vector<std::string> libraryDirs = {});
+
+  /// Loads a program file; null after reporting errors (I/O, syntax, static checks).
+  const LoadedProgram* load(const std::string& path);
+  /// `M98 P<n>` / `G65 P<n>`: O%04d then O%08d with the caller's extension, in the caller's
+  /// folder, then in the library folders. Null after reporting NCTX07 at `where`.
+  const LoadedProgram* byNumber(std::int64_t number, const LoadedProgram& caller,
+                                const SourceRange& where);
+  /// `M98 <name>`: relative to the caller's folder (`\` separators, `..\`), then the library.
+  const LoadedProgram* byName(const std::string& name, const LoadedProgram& caller,
+                              const SourceRange& where);
+
+private:
+  const LoadedProgram* findFile(const std::vector<std::string>& candidates,
+                                const LoadedProgram& caller, const SourceRange& where,
+                                const std::string& what);
+
+  const Dialect& dialect_;
+  SourceManager& sources_;
+  diag::Engine& diags_;
+  std::vector<std::string> libraryDirs_;
+  std::unordered_map<std::string, std::unique_ptr<LoadedProgram>> loaded_;
+};
+
+} // namespace gcx::macro
