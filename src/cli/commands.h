@@ -2,6 +2,7 @@
 // 2 usage or I/O error.
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -13,12 +14,19 @@ struct CommonOptions {
   std::string dialect; // empty: from the file extension
   bool json = false;   // diagnostics as JSON
   std::size_t maxErrors = 50;
+  // execution (expand, run, plot)
+  std::vector<std::string> libraryDirs;  // --lib: where M98 P / G65 P look after the folder
+  std::uint64_t maxJumps = 10'000'000;   // --max-jumps: backward jumps before "runaway loop"
+  std::uint64_t maxBlocks = 200'000'000; // --max-blocks
+  int maxDepth = 16;                     // --max-depth: nested calls (the manual's 16)
+  std::string printFile;                 // --print: DPRNT output (default: standard output)
 };
 
 struct ExpandOptions {
   CommonOptions common;
   std::string to;
-  std::string output; // empty: standard output
+  std::string expand = "macros,subprograms"; // --to nct: what to flatten
+  std::string output;                        // empty: standard output
   std::string setup;
   bool provenance = false;
 };

@@ -7,10 +7,20 @@
 
 #include "machine/interpreter.h"
 #include "passes/check/static_checks.h"
+#include "passes/macro/expander.h"
 
 namespace gcx::cli {
 
 namespace fs = std::filesystem;
+
+std::ostream& printStream(const CommonOptions& opt, bool outputOnStdout) {
+  static std::ofstream file;
+  if (!opt.printFile.empty()) {
+    if (!file.is_open()) file.open(opt.printFile, std::ios::binary | std::ios::trunc);
+    return file;
+  }
+  return outputOnStdout ? std::cerr : std::cout;
+}
 
 int openWithSetup(Session& s, const std::string& file, const std::string& setupPath,
                   machine::Setup& setup) {
@@ -25,7 +35,31 @@ int openWithSetup(Session& s, const std::string& file, const std::string& setupP
   return Ok;
 }
 
-bool executeProgram(Session& s, const machine::Setup& setup, motion::Sink& sink) {
+namespace {
+// Programs with macro statements, variables or calls run through the expansion pass, which
+// loads them whole; everything else streams block by block.
+bool expandProgram(Session& s, const CommonOptions& opt, const machine::Setup& setup,
+                   motion::Sink& sink, std::ostream& printOut) {
+  macro::ProgramLibrary library(s.dialect(), s.sources(), s.diags(), opt.libraryDirs);
+  const macro::LoadedProgram* main = library.load(s.path());
+  if (!main) return false;
+  machine::Interpreter interp(s.dialect().profile(), setup, sink, s.diags());
+  macro::SystemVariables system(interp, s.diags());
+  macro::Limits limits;
+  limits.maxJumps = opt.maxJumps;
+  limits.maxBlocks = opt.maxBlocks;
+  limits.maxDepth = opt.maxDepth;
+  macro::Expander expander(library, interp, system, s.diags(), limits);
+  expander.setPrintOutput(&printOut);
+  if (!expander.run(*main)) return false;
+  sink.finish();
+  return !s.diags().hasErrors();
+}
+} // namespace
+
+bool executeProgram(Session& s, const CommonOptions& opt, const machine::Setup& setup,
+                    motion::Sink& sink, std::ostream& printOut) {
+  if (macro::mayNeedExpansion(s.path())) return expandProgram(s, opt, setup, sink, printOut);
   check::StaticChecker checker(s.dialect().profile(), s.diags());
   machine::Interpreter interp(s.dialect().profile(), setup, sink, s.diags());
   ir::Block block;

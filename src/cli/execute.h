@@ -15,7 +15,10 @@ int openWithSetup(Session& s, const std::string& file, const std::string& setupP
 
 /// Static checks and execution, block by block; stops at the first error. True if the whole
 /// program ran without error.
-bool executeProgram(Session& s, const machine::Setup& setup, motion::Sink& sink);
+/// Programs with macro statements or calls go through the expansion pass (loaded whole);
+/// DPRNT output goes to printOut.
+bool executeProgram(Session& s, const CommonOptions& opt, const machine::Setup& setup,
+                    motion::Sink& sink, std::ostream& printOut);
 
 /// Writes through a temporary file that replaces `path` only on success (never a partial file);
 /// an empty path means standard output.
@@ -33,6 +36,10 @@ private:
   std::ofstream out_;
   bool done_ = false;
 };
+
+/// Where DPRNT output goes: --print FILE, else standard output, or standard error when the
+/// command's own output is on standard output.
+std::ostream& printStream(const CommonOptions& opt, bool outputOnStdout);
 
 /// A sink that hands every event to several sinks.
 class Tee : public motion::Sink {

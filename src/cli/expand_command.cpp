@@ -1,18 +1,71 @@
 // gcx expand FILE --to canonical: the flat RS274/NGC program of the program's motion.
+// gcx expand FILE --to nct --expand macros,subprograms: the program with macro statements,
+// variables and calls flattened into plain NCT blocks, canned cycles kept.
 #include "cli/commands.h"
 #include "cli/execute.h"
+#include "dialects/nct/printer.h"
 #include "emit/canonical.h"
+#include "passes/macro/expander.h"
 
 namespace gcx::cli {
 
+namespace {
+
+class DiscardMotion : public motion::Sink {
+public:
+  void event(const motion::Event&) override {}
+};
+
+int expandToNct(Session& s, const ExpandOptions& opt, const machine::Setup& setup) {
+  if (opt.expand != "macros,subprograms" && opt.expand != "subprograms,macros") {
+    reportUsage("--to nct supports --expand macros,subprograms (cycles stay cycles); expanding "
+                "cycles is not implemented yet");
+    return UsageError;
+  }
+  AtomicOutput out(opt.output);
+  if (!out.ok()) {
+    reportUsage("cannot write " + opt.output);
+    return UsageError;
+  }
+  macro::ProgramLibrary library(s.dialect(), s.sources(), s.diags(), opt.common.libraryDirs);
+  const macro::LoadedProgram* main = library.load(s.path());
+  if (!main) {
+    s.flushDiagnostics();
+    return ProgramErrors;
+  }
+  DiscardMotion discard;
+  machine::Interpreter interp(s.dialect().profile(), setup, discard, s.diags());
+  interp.setDeferCycles(true);
+  macro::SystemVariables system(interp, s.diags());
+  macro::Limits limits;
+  limits.maxJumps = opt.common.maxJumps;
+  limits.maxBlocks = opt.common.maxBlocks;
+  limits.maxDepth = opt.common.maxDepth;
+  macro::Expander expander(library, interp, system, s.diags(), limits);
+  expander.setPrintOutput(&printStream(opt.common, opt.output.empty()));
+  expander.onFlatBlock([&](const ir::Block& b) {
+    ir::Block flat = b; // sequence numbers and comments do not survive expansion
+    flat.sequence.reset();
+    flat.comments.clear();
+    if (!flat.words.empty()) out.stream() << nct::printBlock(flat) << '\n';
+  });
+  const bool ok = expander.run(*main);
+  s.flushDiagnostics();
+  if (!ok) return ProgramErrors;
+  return out.commit() ? Ok : UsageError;
+}
+
+} // namespace
+
 int runExpand(const std::string& file, const ExpandOptions& opt) {
-  if (opt.to != "canonical") {
-    reportUsage("--to " + opt.to + " is not implemented yet; only --to canonical is");
+  if (opt.to != "canonical" && opt.to != "nct") {
+    reportUsage("--to " + opt.to + " is not implemented yet; --to canonical and --to nct are");
     return UsageError;
   }
   Session s(opt.common);
   machine::Setup setup;
   if (int rc = openWithSetup(s, file, opt.setup, setup)) return rc;
+  if (opt.to == "nct") return expandToNct(s, opt, setup);
   AtomicOutput out(opt.output);
   if (!out.ok()) {
     reportUsage("cannot write " + opt.output);
@@ -22,7 +75,8 @@ int runExpand(const std::string& file, const ExpandOptions& opt) {
   copt.provenance = opt.provenance;
   copt.fileName = [&](FileId id) { return s.sources().name(id); };
   emit::CanonicalEmitter emitter(out.stream(), copt);
-  const bool ok = executeProgram(s, setup, emitter);
+  const bool ok =
+      executeProgram(s, opt.common, setup, emitter, printStream(opt.common, opt.output.empty()));
   s.flushDiagnostics();
   if (!ok) return ProgramErrors;
   return out.commit() ? Ok : UsageError;

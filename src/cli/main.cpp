@@ -19,6 +19,14 @@ int main(int argc, char** argv) {
     cmd->add_option("--max-errors", common.maxErrors, "stop after this many errors")
         ->check(CLI::PositiveNumber);
   };
+  auto addExecution = [&](CLI::App* cmd) {
+    cmd->add_option("--lib", common.libraryDirs, "folders searched for M98/G65 programs");
+    cmd->add_option("--max-jumps", common.maxJumps, "backward jumps before a runaway-loop error");
+    cmd->add_option("--max-blocks", common.maxBlocks, "blocks executed before an error");
+    cmd->add_option("--max-depth", common.maxDepth, "nested subprogram and macro calls")
+        ->check(CLI::Range(1, 1000));
+    cmd->add_option("--print", common.printFile, "file for DPRNT/BPRNT output");
+  };
 
   std::vector<std::string> checkFiles;
   CLI::App* check = app.add_subcommand("check", "syntax and static checks");
@@ -42,12 +50,16 @@ int main(int argc, char** argv) {
   std::string expandFile;
   CLI::App* expand = app.add_subcommand("expand", "expand to flat motion in a target dialect");
   expand->add_option("FILE", expandFile, "program file")->required();
-  expand->add_option("--to", expandOpt.to, "target: canonical (RS274/NGC that LinuxCNC runs)")
+  expand
+      ->add_option("--to", expandOpt.to, "target: canonical (RS274/NGC that LinuxCNC runs) or nct")
       ->required();
   expand->add_option("-o,--output", expandOpt.output, "output file (default: standard output)");
   expand->add_option("--setup", expandOpt.setup, "machine setup (JSON): offsets, tools, ...");
   expand->add_flag("--provenance", expandOpt.provenance, "a source comment on each line");
+  expand->add_option("--expand", expandOpt.expand,
+                     "with --to nct: what to flatten (macros,subprograms; cycles stay cycles)");
   addCommon(expand);
+  addExecution(expand);
 
   RunOptions runOpt;
   std::string runFile;
@@ -57,6 +69,7 @@ int main(int argc, char** argv) {
   run->add_option("--trace", runOpt.trace, "write the motion trace (JSON lines) to this file");
   run->add_flag("--stats", runOpt.stats, "print path length, time and bounds");
   addCommon(run);
+  addExecution(run);
 
   PlotOptions plotOpt;
   std::string plotFile;
@@ -67,6 +80,7 @@ int main(int argc, char** argv) {
   plot->add_option("--view", plotOpt.view, "xy, xz, yz or iso")
       ->check(CLI::IsMember({"xy", "xz", "yz", "iso"}));
   addCommon(plot);
+  addExecution(plot);
 
   try {
     app.parse(argc, argv);

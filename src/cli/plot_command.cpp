@@ -21,7 +21,7 @@ int runPlot(const std::string& file, const PlotOptions& opt) {
     return UsageError;
   }
   motion::SvgPlotter plotter(out.stream(), sopt);
-  const bool ok = executeProgram(s, setup, plotter);
+  const bool ok = executeProgram(s, opt.common, setup, plotter, printStream(opt.common, false));
   s.flushDiagnostics();
   if (!ok) return ProgramErrors;
   return out.commit() ? Ok : UsageError;

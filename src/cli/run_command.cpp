@@ -29,7 +29,7 @@ int runRun(const std::string& file, const RunOptions& opt) {
   sopt.rapidRate = setup.rapidRate;
   motion::StatsCollector stats(sopt);
   tee.add(stats);
-  const bool ok = executeProgram(s, setup, tee);
+  const bool ok = executeProgram(s, opt.common, setup, tee, printStream(opt.common, false));
   s.flushDiagnostics();
   if (!ok) return ProgramErrors;
   if (traceFile && !traceFile->commit()) return UsageError;

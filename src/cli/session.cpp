@@ -34,6 +34,7 @@ bool Session::open(const std::string& path) {
     return false;
   }
   file_ = sources_.addFile(path);
+  path_ = path;
   source_ = dialect_->open(in_, file_, diags_);
   return true;
 }

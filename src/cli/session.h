@@ -19,6 +19,7 @@ public:
   bool open(const std::string& path);
   BlockSource& source() { return *source_; }
   const Dialect& dialect() const { return *dialect_; }
+  const std::string& path() const { return path_; }
   FileId file() const { return file_; }
   diag::Engine& diags() { return diags_; }
   SourceManager& sources() { return sources_; }
@@ -32,6 +33,7 @@ private:
   diag::Engine diags_;
   std::ifstream in_;
   const Dialect* dialect_ = nullptr;
+  std::string path_;
   FileId file_ = 0;
   std::unique_ptr<BlockSource> source_;
 };

@@ -19,6 +19,7 @@ inline constexpr const char* BlockNotFound = "2125";
 // --- spec numbers (nct-macro.md §12)
 inline constexpr const char* LoopPairing = "NCTX06";
 inline constexpr const char* VariableNotAllowed = "NCTX10";
+inline constexpr const char* WriteProtected = "NCTX02";
 inline constexpr const char* CallNesting = "NCTX03";
 inline constexpr const char* ProgramNotFound = "NCTX07";
 inline constexpr const char* MissingReturn = "NCTX08";
@@ -59,6 +60,10 @@ inline constexpr const char* DwellWithoutP = "GCX035";
 inline constexpr const char* ExpressionNotExpanded = "GCX036";
 inline constexpr const char* ArcZeroRadius = "GCX037";
 inline constexpr const char* EndWithoutM30 = "GCX038";
+// --- gcx: the macro pass
+inline constexpr const char* RunawayLoop = "GCX040";
+inline constexpr const char* TooManyBlocks = "GCX041";
+inline constexpr const char* ParameterMissing = "NCTX11";
 
 // --- gcx: setup file (--setup FILE, src/machine/setup)
 inline constexpr const char* SetupNotJson = "GCX020";
@@ -76,5 +81,11 @@ inline constexpr const char* SqrtNegative = "2122";
 inline constexpr const char* BitOperandRange = "2129";
 inline constexpr const char* UndefinedVariable = "NCTX01";
 inline constexpr const char* AddressValueRange = "NCTX04";
+
+// --- macro variables (nct-macro.md §2.7, §2.8)
+inline constexpr const char* ReadOnlyVariable = "2161";
+inline constexpr const char* BitValueRange = "2092";
+inline constexpr const char* VacantToSystem = "NCTX05";
+inline constexpr const char* RuntimeOnlyVariable = "NCTW01";
 
 } // namespace gcx::diag::code

@@ -53,15 +53,49 @@ void Interpreter::resetModal() {
   state_ = ModalState{};
   state_.tool = tool, state_.selectedTool = selected;
   state_.spindleSpeed = speed, state_.spindleDirection = direction, state_.feed = feed;
+  modalCodes_.fill(0);
   for (int code : profile_.powerOnGCodes10)
     for (const GCodeSpec& g : profile_.gcodes)
-      if (g.code10 == code) setModal(g);
+      if (g.code10 == code) {
+        setModal(g);
+        if (g.group > 0 && g.group < static_cast<int>(modalCodes_.size()))
+          modalCodes_[g.group] = g.code10;
+      }
   for (int a = 0; a < 3; ++a)
     if (setup_.parameter(std::string("N0106.DIA") + "XYZ"[a], 0) == 1)
       state_.diameterAxes |= 1u << a;
   offsets_.g92 = offsets_.g52 = Vec3::Zero();
   offsets_.length = 0;
   transforms_.clear();
+}
+
+int Interpreter::modalCode(int group) const {
+  return group > 0 && group < static_cast<int>(modalCodes_.size()) ? modalCodes_[group] : 0;
+}
+
+void Interpreter::setWorkOffset(const std::string& key, const Vec3& value) {
+  setup_.workOffsets[key] = {value.x(), value.y(), value.z()};
+  if (key == "common") offsets_.common = value;
+  reexpress();
+}
+
+void Interpreter::setToolLength(int reg, double length) {
+  setup_.tools[reg].length = length;
+}
+void Interpreter::setToolRadius(int reg, double radius) {
+  setup_.tools[reg].radius = radius;
+}
+
+double Interpreter::toolWear(int reg, bool radius) const {
+  const auto& wear = radius ? radiusWear_ : wear_;
+  auto it = wear.find(reg);
+  return it == wear.end() ? 0.0 : it->second;
+}
+
+void Interpreter::setToolWear(int reg, bool radius, double wear) {
+  ToolData& t = setup_.tools[reg];
+  (radius ? t.radius : t.length) += wear - toolWear(reg, radius);
+  (radius ? radiusWear_ : wear_)[reg] = wear;
 }
 
 Vec3 Interpreter::currentWorkOffset() const {
@@ -130,6 +164,14 @@ bool Interpreter::execute(const ir::Block& block, const motion::Provenance& from
       w.extra[3 + i] = w.uvw[i];
       w.uvw[i] = nullptr;
     }
+  if (block.sequence) state_.lastN = *block.sequence;
+  if (w.d) state_.lastD = static_cast<int>(w.d->number);
+  if (w.e) state_.lastE = w.e->number;
+  if (w.h) state_.lastH = static_cast<int>(w.h->number);
+  if (w.s) state_.lastS = w.s->number;
+  if (!w.m.empty()) state_.lastM = static_cast<int>(w.m.back()->number);
+  for (const ir::Word* o : w.other)
+    if (o->is('O')) state_.lastO = static_cast<int>(o->number);
   const ModalState before = state_;
   if (!applyModal(w)) return false;
   selectPlaneAxes(w);
@@ -228,6 +270,8 @@ bool Interpreter::applyModal(const BlockWords& w) {
                   fmt::format("{} is not a G code of the {} dialect and is not configured as a "
                               "macro call",
                               gName(word), profile_.name));
+    if (g->group > 0 && g->group < static_cast<int>(modalCodes_.size()))
+      modalCodes_[g->group] = g->code10;
     if (setModal(*g)) {
       if (g->action == GAction::WorkOffset) reexpress();
       continue;
@@ -260,6 +304,13 @@ bool Interpreter::applyModal(const BlockWords& w) {
     case GAction::OtherReferenceReturn:
     case GAction::DiameterMode:
       break; // applyNonMotion
+    case GAction::DrillCycle:
+    case GAction::TurningCycle:
+      if (deferCycles_) {
+        if (g->action == GAction::DrillCycle) state_.cycle = g->action;
+        break;
+      }
+      [[fallthrough]];
     default:
       return fail(diag::code::NotImplemented, word.range,
                   fmt::format("{} ({}) is not implemented yet", gName(word), g->meaning));
@@ -537,9 +588,10 @@ bool Interpreter::dataInput(const BlockWords& w, const ir::Block& dataBlock) {
     if (!w.p || !w.r) return fail(diag::code::MissingData, g->range, "G10 L10/L11 needs P and R");
     ToolData& t = setup_.tools[static_cast<int>(w.p->number)];
     const double v = mm(w.r->number);
-    if (add || w.r->incremental)
+    if (add || w.r->incremental) {
       t.length += v;
-    else if (l == 10)
+      if (l == 11) wear_[static_cast<int>(w.p->number)] += v; // the geometry stays
+    } else if (l == 10)
       t.length = v + wear_[static_cast<int>(w.p->number)];
     else {
       t.length += v - wear_[static_cast<int>(w.p->number)];
@@ -665,8 +717,15 @@ Vec3 Interpreter::target(const BlockWords& w, bool allowPolar) const {
 }
 
 bool Interpreter::move(const BlockWords& w) {
-  if (state_.cycle != GAction::CycleCancel)
-    return fail(diag::code::NotImplemented, blockRange_, "canned cycles are not implemented yet");
+  if (state_.cycle != GAction::CycleCancel) {
+    if (!deferCycles_)
+      return fail(diag::code::NotImplemented, blockRange_, "canned cycles are not implemented yet");
+    const motion::PlaneAxes ax = motion::axesOf(state_.plane);
+    const Vec3 hole = target(w, true);
+    program_[ax.first] = hole[ax.first];
+    program_[ax.second] = hole[ax.second];
+    return true;
+  }
   const Vec3 to = target(w, true);
   const motion::Extra extraTo = extraTarget(w);
   switch (state_.motion) {
@@ -885,6 +944,21 @@ bool Interpreter::afterMotion(const BlockWords& w) {
     emit(std::move(e));
   }
   return true;
+}
+
+void Interpreter::message(const std::string& text, const motion::Provenance& from, bool stop) {
+  from_ = from;
+  motion::Event e;
+  e.kind = Kind::Message;
+  e.start = e.end = machine_;
+  e.extraStart = e.extraEnd = extra_;
+  e.text = text;
+  emit(e);
+  if (stop) {
+    e.kind = Kind::Stop;
+    e.text.clear();
+    emit(std::move(e));
+  }
 }
 
 void Interpreter::finish() {

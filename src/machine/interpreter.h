@@ -4,6 +4,7 @@
 // true state; there is no second copy of any rule.
 #pragma once
 #include <array>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -42,6 +43,10 @@ struct ModalState {
   double surfaceSpeedValue = 0;
   double maxSpindleSpeed = 0; // G92 S clamp for G96 (0: none)
   unsigned diameterAxes = 0;  // bit a: axis a (X=0) programmed as a diameter (G10.9, N0106)
+  // the last value of words that only macro variables report (#4107-#4120, nct-macro.md §2.9.4)
+  int lastD = 0, lastH = 0, lastM = 0, lastO = 0; // lastO: O word or setCalledProgram
+  std::int64_t lastN = 0;                         // first N of the block
+  double lastE = 0, lastS = 0;                    // as programmed (S: rpm, or m/min in G96)
 };
 
 /// Rotary-axis rollover (nct.md §3.10, N0107 REN/ABS/ASH, N0108 RollAmount).
@@ -60,6 +65,11 @@ public:
   bool execute(const ir::Block& block, const motion::Provenance& from);
   /// The input ended; a program may end without M2/M30 (nct.md Q31).
   void finish();
+  /// For `--to nct` without cycle expansion: canned-cycle blocks pass through unexecuted; the
+  /// programmed position follows the hole positions in the plane (not the drilling axis).
+  void setDeferCycles(bool on) { deferCycles_ = on; }
+  /// An operator message (#3006, #3106, DPRNT...); with stop, a program stop follows it.
+  void message(const std::string& text, const motion::Provenance& from, bool stop);
 
   bool ended() const { return ended_; }
   const ModalState& state() const { return state_; }
@@ -67,6 +77,39 @@ public:
   const Vec3& programPosition() const { return program_; }
   /// Gauge point in the machine frame (mm).
   const Vec3& machinePosition() const { return machine_; }
+  const motion::Extra& extraPosition() const { return extra_; }
+
+  // --- what macro system variables read and write (nct-macro.md §2.9) ---------------------
+  /// The G code (times ten) last in force in modal group g (0 if none), e.g. 170 for G17.
+  int modalCode(int group) const;
+  /// Records a modal G code handled outside the engine (G66/G66.1/G67 by the macro pass).
+  void setModalCode(int group, int code10) {
+    if (group > 0 && group < static_cast<int>(modalCodes_.size())) modalCodes_[group] = code10;
+  }
+  const Setup& setup() const { return setup_; }
+  /// Active length offset along Z (signed, mm) and the G92 / G52 shifts.
+  double lengthOffset() const { return offsets_.length; }
+  const Vec3& g92Shift() const { return offsets_.g92; }
+  const Vec3& localOrigin() const { return offsets_.g52; }
+  /// Writes a work offset ("G54", "G54.1 P3", "common"); the tool does not move.
+  void setWorkOffset(const std::string& key, const Vec3& value);
+  /// Writes a tool length register (takes effect when H is programmed again, nct.md §2.3).
+  void setToolLength(int reg, double length);
+  void setToolRadius(int reg, double radius);
+  /// Wear part of a length (radius false) or radius register as G10 L11 or #11000+n / #13000+n
+  /// set it; the register itself holds geometry + wear (nct-macro.md §2.9.6).
+  double toolWear(int reg, bool radius) const;
+  /// Sets the wear and keeps the geometry: the register changes by the difference.
+  void setToolWear(int reg, bool radius, double wear);
+  /// Machine position of program zero: all offsets and the active length, no transforms.
+  Vec3 workOrigin() const;
+  const Transforms& transforms() const { return transforms_; }
+  /// The program called last (#4115) for calls the interpreter does not see (M98, G65).
+  void setCalledProgram(int number) { state_.lastO = number; }
+  /// A machine parameter as the setup or a G10 L52 record set it.
+  double parameter(const std::string& key, double fallback) const {
+    return setup_.parameter(key, fallback);
+  }
 
 private:
   struct Offsets {
@@ -78,7 +121,6 @@ private:
 
   bool fail(const char* code, const SourceRange& where, std::string message);
   double mm(double v) const { return state_.inch ? v * 25.4 : v; }
-  Vec3 workOrigin() const;                   // machine position of program zero (no transforms)
   Vec3 toMachine(const Vec3& program) const; // full pipeline
   void reexpress();                          // program position from the machine position
   Vec3 currentWorkOffset() const;
@@ -124,10 +166,13 @@ private:
   motion::Extra extra_ = motion::Extra::Zero(); // A B C (continuous, degrees), U V W (mm)
   unsigned parallelAxes_ = 0; // bit i: U/V/W is an axis parallel to X/Y/Z (N0103.U ...)
   Rollover rollover_;
+  std::array<int, 64> modalCodes_{}; // per modal group: the G code (x10) last in force
   double radiusTolerance_;
   motion::Provenance from_;
   SourceRange blockRange_;
-  std::map<int, double> wear_; // G10 L11 length wear per register
+  std::map<int, double> wear_;       // G10 L11 length wear per register
+  std::map<int, double> radiusWear_; // #13000+n radius wear per register
+  bool deferCycles_ = false;
   bool ended_ = false;
   bool dataMode_ = false;
 };

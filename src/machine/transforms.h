@@ -20,6 +20,8 @@ public:
   bool rotating() const { return has(Kind::Rotate); }
   bool scaling() const { return has(Kind::Scale); }
   bool mirroring() const { return mirrorAxes_ != 0; }
+  /// Mirrored axes: bit 0 = X, 1 = Y, 2 = Z.
+  unsigned mirrorAxes() const { return mirrorAxes_; }
   bool identity() const { return layers_.empty() && !mirroring(); }
   /// The layer switched on last (on/off pairs must nest, nct.md §3.15 ordering rules).
   std::optional<Kind> innermost() const;

@@ -142,3 +142,52 @@ ProgramRun runNct(const std::string& text, const machine::Setup& setup, motion::
 }
 
 } // namespace gcx::test
+
+#include <fstream>
+
+#include "dialect/dialect.h"
+#include "passes/macro/expander.h"
+
+namespace gcx::test {
+
+MacroRun runMacro(const std::map<std::string, std::string>& files, const std::string& main,
+                  const std::vector<int>& watch, const machine::Setup& setup,
+                  std::uint64_t maxJumps) {
+  static int counter = 0;
+  const fs::path dir =
+      fs::temp_directory_path() / fmt::format("gcx-macro-{}-{}", ::getpid(), ++counter);
+  fs::create_directories(dir);
+  for (const auto& [name, text] : files)
+    std::ofstream(dir / name, std::ios::binary) << text;
+  MacroRun run;
+  SourceManager sm;
+  diag::Engine diags(100);
+  macro::ProgramLibrary library(*findDialect("nct"), sm, diags);
+  std::vector<motion::Event>& events = run.events;
+  Collect sink(events, nullptr);
+  std::ostringstream printed;
+  if (const macro::LoadedProgram* prog = library.load((dir / main).string())) {
+    machine::Interpreter interp(nct::profile(), setup, sink, diags);
+    macro::SystemVariables system(interp, diags);
+    macro::Limits limits;
+    limits.maxJumps = maxJumps;
+    macro::Expander expander(library, interp, system, diags, limits);
+    expander.setPrintOutput(&printed);
+    expander.run(*prog);
+    for (int n : watch)
+      if (auto v = expander.read(n, {})) run.vars[n] = *v;
+    run.program = interp.programPosition();
+  }
+  run.printed = printed.str();
+  for (const diag::Diagnostic& d : diags.all()) {
+    if (d.severity == diag::Severity::Error)
+      run.errors.push_back(fmt::format("{}:{}:{} {}",
+                                       fs::path(sm.name(d.range.begin.file)).filename().string(),
+                                       d.range.begin.line, d.range.begin.col, d.code));
+    run.rendered += diag::renderText(d, sm);
+  }
+  fs::remove_all(dir);
+  return run;
+}
+
+} // namespace gcx::test
