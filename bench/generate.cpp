@@ -1,12 +1,15 @@
 // Generates large NCT programs for the benchmarks: `gcx-bench-gen KIND LINES > file`.
 //   lines   G1/G2 contour blocks (the CAM-output bulk the pipeline must stream)
+//   holes   a G83 drilling cycle repeated at about LINES positions
+//   macro   an NCT WHILE loop that emits LINES G1 blocks (the macro expansion pass)
+//   oword   the same loop for LinuxCNC (o100 while ... o100 endwhile), for rs274
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 
 int main(int argc, char** argv) {
   if (argc != 3) {
-    std::fprintf(stderr, "usage: gcx-bench-gen lines|holes LINES\n");
+    std::fprintf(stderr, "usage: gcx-bench-gen lines|holes|macro|oword LINES\n");
     return 2;
   }
   const std::string kind = argv[1];
@@ -30,6 +33,13 @@ int main(int argc, char** argv) {
     for (long i = 4; i < n - 1; ++i)
       std::printf("X%.3f Y%.3f\n", (i % 1000) * 0.5, (i / 1000) * 0.5);
     std::printf("G80\n");
+  } else if (kind == "macro" || kind == "oword") {
+    // LINES G1 blocks from one loop: a raster of 1 mm steps, X and Y in -100..99 mm
+    const char* move = "G1 X[[#1MOD200]-100] Y[[FIX[#1/200]MOD200]-100] F1000";
+    if (kind == "macro")
+      std::printf("#1=0\nWHILE[#1LT%ld]DO1\n%s\n#1=#1+1\nEND1\n", n, move);
+    else
+      std::printf("#1=0\no100 while [#1 LT %ld]\n%s\n#1=[#1+1]\no100 endwhile\n", n, move);
   } else {
     std::fprintf(stderr, "unknown kind %s\n", kind.c_str());
     return 2;

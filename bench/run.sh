@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # make bench: throughput (lines/s) and peak memory of gcx on generated programs, and the same
 # program through LinuxCNC's rs274 when it is installed (the ratio is gcx / rs274 speed).
+# The macro section runs a WHILE loop of LINES iterations (one G1 block each) through gcx's
+# macro expansion pass, and the equivalent o-word loop through rs274; there lines/s counts the
+# blocks emitted, not the source lines.
 #   usage: bench/run.sh BUILD_DIR [LINES]
 set -euo pipefail
 build=${1:-build}
@@ -17,7 +20,7 @@ measure() {  # measure LABEL LINES COMMAND... -> prints lines/s and peak RSS
     echo "$label: FAILED"; cat "$work/err"; return 1; }
   read -r secs kb < "$work/time"
   awk -v l="$label" -v n="$n" -v s="$secs" -v k="$kb" \
-    'BEGIN { printf "%-44s %9.2f s %12.0f lines/s %8.1f MB peak RSS\n", l, s, (s > 0 ? n / s : 0), k / 1024 }'
+    'BEGIN { printf "%-50s %9.2f s %12.0f lines/s %8.1f MB peak RSS\n", l, s, (s > 0 ? n / s : 0), k / 1024 }'
   echo "$secs" > "$work/last"
 }
 
@@ -45,4 +48,35 @@ if command -v rs274 > /dev/null; then
   awk -v g="$gcx_secs" -v r="$rs_secs" 'BEGIN { printf "ratio: gcx expand is %.1fx the speed of rs274\n", (g > 0 ? r / g : 0) }'
 else
   echo "rs274 not installed: no ratio"
+fi
+
+echo "== macro expansion: a WHILE loop emitting $lines G1 blocks (lines/s = blocks emitted/s)"
+"$gen" macro "$lines" > "$work/macro.nct"
+# the loop makes one backward jump and runs three blocks per iteration: raise the runaway limits
+limits=(--max-jumps $((lines + 1000)) --max-blocks $((lines * 4 + 1000)))
+measure "gcx expand --to canonical (macro, $lines blocks)" "$lines" \
+  "$gcx" expand "$work/macro.nct" --to canonical "${limits[@]}" -o "$work/macro.ngc"
+macro_secs=$(cat "$work/last")
+feeds=$(grep -c '^G1 ' "$work/macro.ngc" || true)
+if [ "$feeds" -ne $((lines + 1)) ]; then  # the loop's blocks plus the plunge
+  echo "gcx expand wrote $feeds G1 blocks, expected $((lines + 1))"; exit 1
+fi
+measure "gcx run --stats (macro, $lines blocks)" "$lines" \
+  "$gcx" run "$work/macro.nct" --stats "${limits[@]}"
+
+if command -v rs274 > /dev/null; then
+  echo "== LinuxCNC rs274 on the same loop written with o-words"
+  "$gen" oword "$lines" > "$work/oword.ngc"
+  mkdir -p "$work/home"
+  : > "$work/oword.var"
+  measure "rs274 (o-word loop, $lines blocks)" "$lines" env HOME="$work/home" \
+    rs274 -g -v "$work/oword.var" "$work/oword.ngc" "$work/oword.canon" < /dev/null
+  rs_macro_secs=$(cat "$work/last")
+  feeds=$(grep -c 'STRAIGHT_FEED' "$work/oword.canon" || true)
+  if [ "$feeds" -ne $((lines + 1)) ]; then
+    echo "rs274 wrote $feeds feed moves, expected $((lines + 1))"; exit 1
+  fi
+  awk -v g="$macro_secs" -v r="$rs_macro_secs" 'BEGIN { printf "ratio: gcx expand (macro loop) is %.1fx the speed of rs274 (o-word loop)\n", (g > 0 ? r / g : 0) }'
+else
+  echo "rs274 not installed: no macro ratio"
 fi

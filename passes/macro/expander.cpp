@@ -323,7 +323,7 @@ bool Expander::ncBlock(Frame& f, const ir::Block& b) {
   WordOptions opt;
   opt.callNumber = call;
   for (const ir::Word& w : b.words) {
-    if (w.kind != ir::ValueKind::Expression) {
+    if (w.kind != ir::ValueKind::Expression && w.address != "AX") {
       flat.words.push_back(w);
       continue;
     }
@@ -334,10 +334,13 @@ bool Expander::ncBlock(Frame& f, const ir::Block& b) {
       static const char* const names[] = {"X", "Y", "Z", "A", "B", "C"};
       const long k = std::lround(*n);
       if (k < 1 || k > 6)
-        return fail(diag::code::ForbiddenAddress, w.range,
-                    fmt::format("no axis number {} in this channel", k));
+        return fail("2018", w.range, fmt::format("wrong physical axis number {}", k));
       resolved.address = names[k - 1];
       resolved.axisIndex.clear();
+    }
+    if (resolved.kind == ir::ValueKind::Number) { // AX[e]=<literal>
+      flat.words.push_back(std::move(resolved));
+      continue;
     }
     WordValue v = wordValue(resolved, eval_, opt);
     if (v.result == WordResult::Error) return false;

@@ -159,7 +159,7 @@ std::optional<Value> SystemVariables::read(const Ref& r, const std::string& labe
     if (r.index > 3) return Value::of(0); // offsets of A B C are not modelled (always 0)
     return Value::of(toUnits(machine_.setup().workOffset(workOffsetKey(r.sub))[r.index - 1]));
   case Kind::BasicRotation:
-    return Value::of(0); // gcx has no basic rotation: G10 L2 I/J/K and writes here are GCX030
+    return Value::of(machine_.workRotation(workOffsetKey(r.sub), r.index));
   case Kind::DynamicOffset: {
     auto it = dynamicOffsets_.find({r.sub, r.index});
     const double v = it == dynamicOffsets_.end() ? 0.0 : it->second;
@@ -355,9 +355,8 @@ bool SystemVariables::write(const Ref& r, const std::string& label, const Value&
   case Kind::WorkOffset:
     return writeWorkOffset(r, label, x, where);
   case Kind::BasicRotation:
-    if (x == 0) return true;
-    return fail(diag::code::NotImplemented, where,
-                fmt::format("{}: basic rotation of a work offset is not implemented yet", label));
+    machine_.setWorkRotation(workOffsetKey(r.sub), r.index, x);
+    return true;
   case Kind::DynamicOffset:
     dynamicOffsets_[{r.sub, r.index}] = r.index <= 3 ? toMm(x) : x;
     return true;

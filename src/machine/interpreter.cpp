@@ -98,6 +98,15 @@ void Interpreter::setToolWear(int reg, bool radius, double wear) {
   (radius ? radiusWear_ : wear_)[reg] = wear;
 }
 
+double Interpreter::workRotation(const std::string& key, int plane) const {
+  auto it = rotations_.find(key);
+  return it == rotations_.end() || plane < 1 || plane > 3 ? 0.0 : it->second[plane - 1];
+}
+
+void Interpreter::setWorkRotation(const std::string& key, int plane, double degrees) {
+  if (plane >= 1 && plane <= 3) rotations_[key][plane - 1] = degrees;
+}
+
 Vec3 Interpreter::currentWorkOffset() const {
   const std::string key = state_.workOffset > 100
                               ? fmt::format("G54.1 P{}", state_.workOffset - 100)
@@ -174,6 +183,17 @@ bool Interpreter::execute(const ir::Block& block, const motion::Provenance& from
     if (o->is('O')) state_.lastO = static_cast<int>(o->number);
   const ModalState before = state_;
   if (!applyModal(w)) return false;
+  if (w.hasAxisWord() && !w.has(GAction::DataInput)) {
+    const std::string key = state_.workOffset > 100
+                                ? fmt::format("G54.1 P{}", state_.workOffset - 100)
+                                : fmt::format("G{}", 53 + state_.workOffset);
+    for (int plane = 1; plane <= 3; ++plane)
+      if (workRotation(key, plane) != 0)
+        return fail(diag::code::NotImplemented, blockRange_,
+                    fmt::format("moving in {} with a basic rotation (G10 L2 I J K) is not "
+                                "implemented yet",
+                                key));
+  }
   selectPlaneAxes(w);
   emitModalChanges(before);
   bool consumed = false;
@@ -559,10 +579,6 @@ bool Interpreter::dataInput(const BlockWords& w, const ir::Block& dataBlock) {
   const bool add = state_.incremental;
   if (l == 2 || l == 20) { // work offsets (nct.md §3.14)
     if (!w.p) return fail(diag::code::MissingData, g->range, "G10 L2/L20 needs P");
-    for (int a = 0; a < 3; ++a)
-      if (w.ijk[a])
-        return fail(diag::code::NotImplemented, w.ijk[a]->range,
-                    "basic rotation of a work offset (G10 L2 I J K) is not implemented yet");
     const int p = static_cast<int>(w.p->number);
     std::string key;
     if (l == 2 && p == 0)
@@ -580,6 +596,15 @@ bool Interpreter::dataInput(const BlockWords& w, const ir::Block& dataBlock) {
         value[a] = (add || w.axis[a]->incremental) ? value[a] + v : v;
       }
     setup_.workOffsets[key] = value;
+    for (int a = 0; a < 3; ++a) // I = XY plane (gamma), J = ZX (beta), K = YZ (alpha)
+      if (w.ijk[a]) {
+        if (key == "common")
+          return fail(diag::code::DataOutOfRange, w.ijk[a]->range,
+                      "the common offset carries no rotation (nct.md §3.14)");
+        const double v = w.ijk[a]->number;
+        setWorkRotation(key, a + 1,
+                        (add || w.ijk[a]->incremental) ? workRotation(key, a + 1) + v : v);
+      }
     if (key == "common") offsets_.common = Vec3(value[0], value[1], value[2]);
     reexpress();
     return true;

@@ -95,6 +95,10 @@ public:
   void setWorkOffset(const std::string& key, const Vec3& value);
   /// Writes a tool length register (takes effect when H is programmed again, nct.md §2.3).
   void setToolLength(int reg, double length);
+  /// Basic rotation of a work system (G10 L2 I J K, #120001...): plane 1 = XY (I), 2 = ZX (J),
+  /// 3 = YZ (K), degrees. Stored and readable; moving in a rotated system is not implemented.
+  double workRotation(const std::string& key, int plane) const;
+  void setWorkRotation(const std::string& key, int plane, double degrees);
   void setToolRadius(int reg, double radius);
   /// Wear part of a length (radius false) or radius register as G10 L11 or #11000+n / #13000+n
   /// set it; the register itself holds geometry + wear (nct-macro.md §2.9.6).
@@ -170,8 +174,9 @@ private:
   double radiusTolerance_;
   motion::Provenance from_;
   SourceRange blockRange_;
-  std::map<int, double> wear_;       // G10 L11 length wear per register
-  std::map<int, double> radiusWear_; // #13000+n radius wear per register
+  std::map<std::string, std::array<double, 3>> rotations_; // basic rotations per work system
+  std::map<int, double> wear_;                             // G10 L11 length wear per register
+  std::map<int, double> radiusWear_;                       // #13000+n radius wear per register
   bool deferCycles_ = false;
   bool ended_ = false;
   bool dataMode_ = false;

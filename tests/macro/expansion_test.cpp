@@ -238,6 +238,84 @@ TEST(NctSpec_7, TV24_SubprogramRepetitionAndM99P) {
   EXPECT_EQ(wrongExtension.errors, V{"O0001.nct:1:5 NCTX07"});
 }
 
+TEST(MacroSpec_10, TV24_M99PAndM99InTheMainProgram) {
+  MacroRun p = runMacro({{"O0001.nct", "N101 M98 P13\nN102 #1=1\nN250 #2=2\nM30\n"},
+                         {"O0013.nct", "#3=3\nM99 P250\n"}},
+                        "O0001.nct", {1, 2, 3});
+  ASSERT_TRUE(p.errors.empty()) << p.rendered;
+  EXPECT_EQ(value(p, 1), "vac");
+  EXPECT_EQ(value(p, 2), "2");
+  EXPECT_EQ(value(p, 3), "3");
+  MacroRun loop =
+      runMacro({{"O0001.nct", "#100=#100+1\nIF[#100GE3]GOTO10\nM99\nN10 #101=#100\nM30\n"}},
+               "O0001.nct", {100, 101});
+  ASSERT_TRUE(loop.errors.empty()) << loop.rendered;
+  EXPECT_EQ(value(loop, 100), "3");
+  EXPECT_EQ(value(loop, 101), "3");
+  machine::Setup skipOn;
+  skipOn.blockSkip = {1};
+  MacroRun skipped = runMacro({{"O0001.nct", "#100=#100+1\n/ M99\n#101=1\nM30\n"}}, "O0001.nct",
+                              {100, 101}, skipOn);
+  ASSERT_TRUE(skipped.errors.empty()) << skipped.rendered;
+  EXPECT_EQ(value(skipped, 100), "1");
+  EXPECT_EQ(value(skipped, 101), "1");
+}
+
+TEST(MacroSpec_10, TV30_G10AndOffsetVariables) {
+  MacroRun r =
+      runMacro({{"O0001.nct", "G90 G10 L2 P1 X100 Y50\n#1=#5221\n#2=#_WZG54[2]\nG10 L10 P5 R12.5\n"
+                              "G91 G10 L10 P5 R0.5\n#3=#10005\nG90 G10 L10 P5 RI1\n#4=#_OFSHG[5]\n"
+                              "#11005=-0.02\n#5=#11005\nG10 L2 P1 I30\n#6=#120001\nM30\n"}},
+               "O0001.nct", {1, 2, 3, 4, 5, 6});
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(value(r, 1), "100");
+  EXPECT_EQ(value(r, 2), "50");
+  EXPECT_EQ(value(r, 3), "13");
+  EXPECT_EQ(value(r, 4), "14");
+  EXPECT_EQ(value(r, 5), "-0.02");
+  EXPECT_EQ(value(r, 6), "30");
+  EXPECT_EQ(withoutEnd(r.motion()), V{});
+}
+
+TEST(MacroSpec_10, TV31_ModalInformationAndIndirectAxes) {
+  MacroRun r = runMacro(
+      {{"O0001.nct", "G17 G90 G54.1 P1\n#1=#4002\n#2=#4003\n#3=#4014\n#4=#4012\nG91 G18\n"
+                     "#5=#_BUFG[2]\n#6=#4003\n#101=AXNUM[X]\n#102=AXNUM[Y]\n#103=AXNUM[Z]\n"
+                     "G90 G0 AX[#101]=10 AX[#102]=20 AX[#103]=30\nM30\n"}},
+      "O0001.nct", {1, 2, 3, 4, 5, 6, 101, 102, 103});
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(value(r, 1), "17");
+  EXPECT_EQ(value(r, 2), "90");
+  EXPECT_EQ(value(r, 3), "154");
+  EXPECT_EQ(value(r, 4), "67");
+  EXPECT_EQ(value(r, 5), "18");
+  EXPECT_EQ(value(r, 6), "91");
+  EXPECT_EQ(value(r, 101), "1");
+  EXPECT_EQ(value(r, 103), "3");
+  EXPECT_EQ(withoutEnd(r.motion()), V{"R 10,20,30"});
+  EXPECT_EQ(runMacro({{"O0001.nct", "#104=AXNUM[U]\nM30\n"}}, "O0001.nct").errors,
+            V{"O0001.nct:1:6 2017"});
+  EXPECT_EQ(runMacro({{"O0001.nct", "G0 AX[9]=1\nM30\n"}}, "O0001.nct").errors,
+            V{"O0001.nct:1:4 2018"});
+}
+
+TEST(MacroSpec_10, TV32_DomainAndAssignmentErrors) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"#1=SQRT[-1]", "1:4 2122"},  {"#1=TAN[90]", "1:4 2116"},       {"#1=TAN[-270]", "1:4 2116"},
+      {"#1=ASIN[1.5]", "1:4 2117"}, {"#1=ACOS[-1.0001]", "1:4 2117"}, {"#1=LN0", "1:4 2118"},
+      {"#1=LN[-2]", "1:4 2118"},    {"#1=LN#0", "1:4 2118"},          {"#1=5/0", "1:4 2093"},
+      {"#1=5MOD#0", "1:4 2093"},    {"#3101=3", "1:1 2161"},          {"#0=1", "1:1 2161"},
+      {"#1100=2", "1:1 2092"},      {"#50=1", "1:1 NCTX01"},
+  };
+  for (auto [block, expected] : cases) {
+    MacroRun r = runMacro({{"O0001.nct", std::string(block) + "\nM30\n"}}, "O0001.nct");
+    EXPECT_EQ(r.errors, V{std::string("O0001.nct:") + expected}) << block << "\n" << r.rendered;
+  }
+  MacroRun bit = runMacro({{"O0001.nct", "#1100=0.4\nM30\n"}}, "O0001.nct", {1100});
+  ASSERT_TRUE(bit.errors.empty()) << bit.rendered;
+  EXPECT_EQ(value(bit, 1100), "1");
+}
+
 TEST(MacroExpansion, RunawayLoopHitsTheJumpLimit) {
   MacroRun r = runMacro({{"O0001.nct", "#1=0\nWHILE[#1GE0]DO1\n#1=#1+1\nEND1\nM30\n"}}, "O0001.nct",
                         {}, {}, 1000);

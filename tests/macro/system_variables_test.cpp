@@ -545,14 +545,13 @@ TEST(SystemVariables, ListedButNotModelledIsGCX030) {
   r.nextLine = 111;
   EXPECT_FALSE(r.vars.read(8401, Rig::at(110)));                // tool data
   EXPECT_FALSE(r.set(8400, 10));                                // 111: R/W, but no magazine
-  EXPECT_FALSE(r.set(120001, 30));                              // 112: basic rotation
-  EXPECT_FALSE(r.set("WRP2", 3, 1));                            // 113
+  EXPECT_TRUE(r.set(120001, 30));                               // 112: basic rotation, stored
+  EXPECT_TRUE(r.set("WRP2", 3, 1));                             // 113
   EXPECT_FALSE(r.set(5204, 1));                                 // 114: common offset of axis 4
   EXPECT_FALSE(r.vars.write(3000, Value::of(1), Rig::at(115))); // the expander's messages
-  EXPECT_EQ(r.take(), (Codes{"GCX030@110", "GCX030@111", "GCX030@112", "GCX030@113", "GCX030@114",
-                             "GCX030@115"}));
-  EXPECT_EQ(r.get(120001), 0); // no rotation: 0
-  EXPECT_EQ(r.get("WRP2", 3), 0);
+  EXPECT_EQ(r.take(), (Codes{"GCX030@110", "GCX030@111", "GCX030@114", "GCX030@115"}));
+  EXPECT_EQ(r.get(120001), 30); // stored; moving in a rotated system is GCX030 (interpreter)
+  EXPECT_EQ(r.get("WRP2", 3), 1);
   EXPECT_TRUE(r.set(120053, 0));
   EXPECT_TRUE(r.set("FOFS2", 1, 4)); // G54.2 table: stored
   EXPECT_EQ(r.get(5541), 4);
