@@ -18,7 +18,7 @@ int specOneVariable(char letter) {
 } // namespace
 
 ArgumentResult bindArguments(const ir::Block& block, const VacantValue& vacant,
-                             const UnknownValue& unknown) {
+                             const UnknownValue& unknown, bool controlPL) {
   ArgumentResult r;
   bool taken[34] = {};
   auto fail = [&](const ir::Word& w, const char* code, std::string msg) {
@@ -28,7 +28,8 @@ ArgumentResult bindArguments(const ir::Block& block, const VacantValue& vacant,
     return r;
   };
   for (const ir::Word& w : block.words) {
-    if (w.is('G') || w.is('P') || w.is('L') || w.kind == ir::ValueKind::Path) continue;
+    if (w.is('G') || (controlPL && (w.is('P') || w.is('L'))) || w.kind == ir::ValueKind::Path)
+      continue;
     if (w.address.size() != 1)
       return fail(w, diag::code::ForbiddenAddress,
                   fmt::format("forbidden address {} in a macro call", w.address));

@@ -29,7 +29,9 @@ using VacantValue = std::function<bool(const ir::Word&)>;
 
 /// Binds the argument words of a macro call block. Control words (the call G code, P, L and
 /// a `<file>`) are skipped. Stops early, with ok() true, when unknown() says a value decides.
+/// With controlPL false, P and L are ordinary arguments (#16, #12): calls by a configured G code
+/// (nct-macro.md §5.4, last table).
 ArgumentResult bindArguments(const ir::Block& block, const VacantValue& vacant,
-                             const UnknownValue& unknown = {});
+                             const UnknownValue& unknown = {}, bool controlPL = true);
 
 } // namespace gcx::nct

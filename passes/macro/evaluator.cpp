@@ -58,13 +58,15 @@ double roundHalfAway(double v) {
   return std::round(v); // std::round rounds halfway cases away from zero
 }
 
-bool compare(const Value& lhs, ir::RelOp op, const Value& rhs) {
+bool compare(const Value& lhs, ir::RelOp op, const Value& rhs, VacantOrder mode) {
   using ir::RelOp;
   if (op == RelOp::Eq || op == RelOp::Ne) {
     const bool equal =
         lhs.vacant || rhs.vacant ? lhs.vacant && rhs.vacant : lhs.number == rhs.number;
     return (op == RelOp::Eq) == equal;
   }
+  if (mode == VacantOrder::Fanuc) // Fanuc Macro B: vacant orders exactly like 0 (§12 Q1)
+    return compare(Value::of(lhs.orZero()), op, Value::of(rhs.orZero()), VacantOrder::Nct);
   if (!lhs.vacant && !rhs.vacant) {
     switch (op) {
     case RelOp::Gt:
@@ -307,7 +309,7 @@ std::optional<bool> Evaluator::condition(const ir::Condition& c) {
   if (!lhs) return std::nullopt;
   auto rhs = value(c.rhs);
   if (!rhs) return std::nullopt;
-  return compare(*lhs, c.op, *rhs);
+  return compare(*lhs, c.op, *rhs, vacantOrder_);
 }
 
 } // namespace gcx::macro

@@ -11,7 +11,11 @@ namespace gcx::macro {
 
 /// §2.5 rule 3: EQ/NE see vacancy; GT GE LT LE order a vacant operand as 0⁺ (above every
 /// number <= 0, below every number > 0, equal to another vacant).
-bool compare(const Value& lhs, ir::RelOp op, const Value& rhs);
+/// How a vacant variable orders against numbers in GT GE LT LE (nct-macro.md §2.5, §12 Q1):
+/// NCT's manual makes it 0⁺ (`#1 GT 0` is true); Fanuc controls treat it as 0.
+enum class VacantOrder { Nct, Fanuc };
+bool compare(const Value& lhs, ir::RelOp op, const Value& rhs,
+             VacantOrder order = VacantOrder::Nct);
 
 /// Rounds half away from zero (§2.2 indirect numbers, §2.6 integer addresses).
 double roundHalfAway(double v);
@@ -34,6 +38,7 @@ public:
   std::optional<int> index(const ir::Expr& e);
 
   diag::Engine& diags() { return diags_; }
+  void setVacantOrder(VacantOrder o) { vacantOrder_ = o; }
 
 private:
   std::optional<Value> unary(const ir::Expr& e);
@@ -47,6 +52,7 @@ private:
 
   VariableAccess& vars_;
   diag::Engine& diags_;
+  VacantOrder vacantOrder_ = VacantOrder::Nct;
 };
 
 } // namespace gcx::macro

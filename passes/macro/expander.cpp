@@ -351,6 +351,11 @@ bool Expander::ncBlock(Frame& f, const ir::Block& b) {
     flat.words.push_back(std::move(resolved));
   }
 
+  if (!insideConfiguredCall()) { // inside one, configured codes are ordinary (§5.8 P3, P4)
+    const std::size_t before = diags_.errorCount();
+    if (auto c = configuredCall(flat)) return runConfiguredCall(f, b, flat, *c);
+    if (diags_.errorCount() != before) return false;
+  }
   const ir::Word* g65 = nullptr;
   for (const ir::Word& w : flat.words)
     if (w.is('G') && (w.number == 65 || w.number == 66 || w.number == 66.1 || w.number == 67))
@@ -451,7 +456,7 @@ bool Expander::callSubprogram(Frame& f, const ir::Block& b, const ir::Word* p, c
 }
 
 bool Expander::bindCall(const ir::Block& b, double callCode, const ir::Word* p,
-                        std::array<Value, 34>& args) {
+                        std::array<Value, 34>& args, bool controlPL) {
   // argument values from the source words: a vacant bare reference leaves its local vacant
   std::map<const ir::Word*, Value> values;
   for (const ir::Word& w : b.words) {
@@ -465,7 +470,7 @@ bool Expander::bindCall(const ir::Block& b, double callCode, const ir::Word* p,
     }
   }
   nct::ArgumentResult bound = nct::bindArguments(
-      b, [&](const ir::Word& w) { return values.count(&w) && values[&w].vacant; });
+      b, [&](const ir::Word& w) { return values.count(&w) && values[&w].vacant; }, {}, controlPL);
   if (!bound.ok()) return fail(bound.code, bound.offending->range, bound.message);
   args = {};
   bool taken[34] = {};
@@ -475,9 +480,127 @@ bool Expander::bindCall(const ir::Block& b, double callCode, const ir::Word* p,
   }
   // the control words' values (§5.3 C3): #10 = the call code, #16 = P, #12 = L
   if (!taken[10]) args[10] = Value::of(callCode);
+  if (!controlPL) return true;
   if (!taken[16] && p) args[16] = Value::of(p->number);
   for (const ir::Word& w : b.words)
     if (w.is('L') && !taken[12] && values.count(&w)) args[12] = values[&w];
+  return true;
+}
+
+bool Expander::insideConfiguredCall() const {
+  for (const Frame& f : stack_)
+    if (f.configured) return true;
+  return false;
+}
+
+std::optional<Expander::ConfiguredCall> Expander::configuredCall(const ir::Block& flat) {
+  auto prm = [&](int n) { return machine_.parameter(fmt::format("N{:04}", n), 0); };
+  auto bit = [&](int n, int b, const char* name) {
+    return machine_.parameter(fmt::format("N{:04}.{}", n, b), 0) == 1 ||
+           machine_.parameter(fmt::format("N{:04}.{}", n, name), 0) == 1;
+  };
+  std::optional<ConfiguredCall> found;
+  bool conflict = false;
+  auto take = [&](ConfiguredCall c) {
+    if (found) {
+      fail("NCTX09", c.word->range, "two codes configured as calls in one block (§5.8 P6)");
+      conflict = true;
+      return;
+    }
+    found = c;
+  };
+  for (const ir::Word& w : flat.words) {
+    if (w.kind != ir::ValueKind::Number || conflict) continue;
+    if (w.is('G')) {
+      for (int i = 0; i < 10; ++i) { // N1704-N1713: G(9010)...G(9019); 1000 means G0
+        const double v = prm(1704 + i);
+        if (v == 0) continue;
+        const double code = std::fabs(v) == 1000 ? 0 : std::fabs(v);
+        if (w.number == code)
+          take({v < 0 ? ConfiguredCall::ModalG : ConfiguredCall::MacroG, 9010 + i, &w});
+      }
+      const double start = prm(1714), first = prm(1715), count = prm(1716);
+      const double g = w.number;
+      if (count > 0 && g == std::floor(g) && g >= std::fabs(start) && g < std::fabs(start) + count)
+        take({start < 0 ? ConfiguredCall::ModalG : ConfiguredCall::MacroG,
+              static_cast<std::int64_t>(first + g - std::fabs(start)), &w});
+    } else if (w.is('M')) {
+      const double m = w.number;
+      for (int i = 0; i < 10; ++i) {
+        if (prm(1733 + i) != 0 && prm(1733 + i) == m) take({ConfiguredCall::MacroM, 9020 + i, &w});
+        if (prm(1720 + i) != 0 && prm(1720 + i) == m)
+          take({ConfiguredCall::SubprogramM, 9000 + i, &w});
+      }
+      if (const double c = prm(1745); c > 0 && m >= prm(1743) && m < prm(1743) + c)
+        take({ConfiguredCall::MacroM, static_cast<std::int64_t>(prm(1744) + m - prm(1743)), &w});
+      if (const double c = prm(1732); c > 0 && m >= prm(1730) && m < prm(1730) + c)
+        take({ConfiguredCall::SubprogramM, static_cast<std::int64_t>(prm(1731) + m - prm(1730)),
+              &w});
+    } else if (w.address.size() == 1) { // N1746 ABCST: A B C S T call O9030-O9034
+      static const char letters[] = {'A', 'B', 'C', 'S', 'T'};
+      static const char* const names[] = {"AM", "BM", "CM", "SM", "TM"};
+      for (int i = 0; i < 5; ++i)
+        if (w.address[0] == letters[i] && bit(1746, i, names[i]))
+          take({ConfiguredCall::SubprogramLetter, 9030 + i, &w, 195 + i});
+    }
+  }
+  if (conflict) return std::nullopt;
+  return found;
+}
+
+bool Expander::runConfiguredCall(Frame& f, const ir::Block& b, const ir::Block& flat,
+                                 const ConfiguredCall& c) {
+  const LoadedProgram* program = library_.byNumber(c.program, *f.program, c.word->range);
+  if (!program) return false;
+  const std::string what = fmt::format("O{:04} ({}{} configured call)", c.program, c.word->address,
+                                       emit::formatNumber(c.word->number));
+  const auto isCallWord = [&](const ir::Word& w) {
+    return w.range.begin.offset == c.word->range.begin.offset && w.address == c.word->address;
+  };
+  if (c.kind != ConfiguredCall::SubprogramM && c.kind != ConfiguredCall::SubprogramLetter) {
+    // G65 type: the other words are arguments, for a G code P and L too (§5.4); #10 = the code
+    ir::Block argsBlock = b;
+    std::erase_if(argsBlock.words, isCallWord);
+    std::array<Value, 34> args;
+    if (!bindCall(argsBlock, c.word->number, nullptr, args, c.kind == ConfiguredCall::MacroM))
+      return false;
+    if (c.kind == ConfiguredCall::ModalG) { // G66 type (N1755 MEQ=0)
+      ModalCall m;
+      m.program = program;
+      m.args = args;
+      m.what = what;
+      modalCalls_.push_back(m);
+      ++f.pc;
+      return true;
+    }
+    if (!pushMacro(f, program, args, 1, what, b.range, f.modalVisible)) return false;
+    stack_.back().configured = true;
+    return true;
+  }
+  // subprogram type: the block's NC part runs first, then `M98 P<program>` (§5.8)
+  ir::Block nc = flat;
+  std::erase_if(nc.words, isCallWord);
+  if (c.kind == ConfiguredCall::SubprogramLetter)
+    commons_[c.valueVariable] = Value::of(c.word->number); // #195-#199 (§5.8)
+  if (!nc.words.empty()) {
+    if (onFlat_) onFlat_(nc);
+    if (!machine_.execute(nc, provenance(b))) {
+      if (machine_.ended()) done_ = true;
+      return machine_.ended();
+    }
+  }
+  if (static_cast<int>(stack_.size()) > limits_.maxDepth)
+    return fail(diag::code::CallNesting, b.range,
+                fmt::format("more than {} nested subprogram and macro calls", limits_.maxDepth));
+  Frame callee;
+  callee.program = program;
+  callee.level = f.level;
+  callee.callBlock = f.pc;
+  callee.callSite = b.range.begin;
+  callee.what = what;
+  callee.configured = true;
+  callee.modalVisible = f.modalVisible;
+  stack_.push_back(std::move(callee));
   return true;
 }
 

@@ -5,6 +5,7 @@
 #include <array>
 #include <functional>
 #include <map>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -35,6 +36,8 @@ public:
   /// Called with every flat NC block (values literal, calls and macro statements gone) just
   /// before the machine executes it: `gcx expand --to nct --expand macros,subprograms`.
   void onFlatBlock(std::function<void(const ir::Block&)> f) { onFlat_ = std::move(f); }
+  /// `--vacant-order fanuc`: vacant compares like 0 (nct-macro.md §12 Q1).
+  void setVacantOrder(VacantOrder o) { eval_.setVacantOrder(o); }
 
   // VariableAccess
   std::optional<Value> read(int number, const SourceRange& where) override;
@@ -61,7 +64,19 @@ private:
     std::vector<Loop> loops;
     bool macro = false;
     std::size_t modalVisible = static_cast<std::size_t>(-1); // modal calls this frame sees
+    bool configured = false; // started by a code configured as a call (§5.8)
   };
+  /// A G, M or letter code the parameters turn into a call (nct-macro.md §5.8).
+  struct ConfiguredCall {
+    enum Kind { MacroG, ModalG, MacroM, SubprogramM, SubprogramLetter } kind;
+    std::int64_t program;
+    const ir::Word* word;
+    int valueVariable = 0; // #195-#199 for A B C S T
+  };
+  std::optional<ConfiguredCall> configuredCall(const ir::Block& flat);
+  bool runConfiguredCall(Frame& f, const ir::Block& b, const ir::Block& flat,
+                         const ConfiguredCall& c);
+  bool insideConfiguredCall() const;
   /// A G66 / G66.1 registration (nct-macro.md §5.5-§5.7).
   struct ModalCall {
     const LoadedProgram* program = nullptr;
@@ -83,8 +98,8 @@ private:
   bool callMacro(Frame& f, const ir::Block& b, const ir::Word* p, const ir::Word* file,
                  std::int64_t times);
   /// Binds a call block's arguments (§5.4); the control values #10/#12/#16 where not taken.
-  bool bindCall(const ir::Block& b, double callCode, const ir::Word* p,
-                std::array<Value, 34>& args);
+  bool bindCall(const ir::Block& b, double callCode, const ir::Word* p, std::array<Value, 34>& args,
+                bool controlPL = true);
   bool pushMacro(Frame& f, const LoadedProgram* program, const std::array<Value, 34>& args,
                  std::int64_t times, std::string what, const SourceRange& site,
                  std::size_t modalVisible);

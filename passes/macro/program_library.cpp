@@ -73,9 +73,13 @@ const LoadedProgram* ProgramLibrary::load(const std::string& path) {
 const LoadedProgram* ProgramLibrary::findFile(const std::vector<std::string>& candidates,
                                               const LoadedProgram& caller, const SourceRange& where,
                                               const std::string& what) {
+  // the caller's folder, then the library folders; system macros of configured calls live in
+  // SystemMacros/Channel1 below them (nct-macro.md §5.1 S6)
   std::vector<fs::path> dirs{fs::path(caller.path).parent_path()};
   for (const std::string& d : libraryDirs_)
     dirs.emplace_back(d);
+  for (std::size_t i = 0, n = dirs.size(); i < n; ++i)
+    dirs.push_back(dirs[i] / "SystemMacros" / "Channel1");
   for (const fs::path& dir : dirs) {
     for (const std::string& name : candidates) {
       const fs::path direct = dir / name;

@@ -20,6 +20,7 @@ struct CommonOptions {
   std::uint64_t maxBlocks = 200'000'000; // --max-blocks
   int maxDepth = 16;                     // --max-depth: nested calls (the manual's 16)
   std::string printFile;                 // --print: DPRNT output (default: standard output)
+  bool fanucVacantOrder = false;         // --vacant-order fanuc (nct-macro.md §12 Q1)
 };
 
 struct ExpandOptions {

@@ -51,6 +51,7 @@ bool expandProgram(Session& s, const CommonOptions& opt, const machine::Setup& s
   limits.maxDepth = opt.maxDepth;
   macro::Expander expander(library, interp, system, s.diags(), limits);
   expander.setPrintOutput(&printOut);
+  if (opt.fanucVacantOrder) expander.setVacantOrder(macro::VacantOrder::Fanuc);
   if (!expander.run(*main)) return false;
   sink.finish();
   return !s.diags().hasErrors();

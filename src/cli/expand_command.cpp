@@ -43,6 +43,7 @@ int expandToNct(Session& s, const ExpandOptions& opt, const machine::Setup& setu
   limits.maxDepth = opt.common.maxDepth;
   macro::Expander expander(library, interp, system, s.diags(), limits);
   expander.setPrintOutput(&printStream(opt.common, opt.output.empty()));
+  if (opt.common.fanucVacantOrder) expander.setVacantOrder(macro::VacantOrder::Fanuc);
   expander.onFlatBlock([&](const ir::Block& b) {
     ir::Block flat = b; // sequence numbers and comments do not survive expansion
     flat.sequence.reset();

@@ -26,6 +26,10 @@ int main(int argc, char** argv) {
     cmd->add_option("--max-depth", common.maxDepth, "nested subprogram and macro calls")
         ->check(CLI::Range(1, 1000));
     cmd->add_option("--print", common.printFile, "file for DPRNT/BPRNT output");
+    cmd->add_option_function<std::string>(
+           "--vacant-order", [&](const std::string& v) { common.fanucVacantOrder = v == "fanuc"; },
+           "how a vacant variable compares in GT/GE/LT/LE: nct (the manual, default) or fanuc")
+        ->check(CLI::IsMember({"nct", "fanuc"}));
   };
 
   std::vector<std::string> checkFiles;

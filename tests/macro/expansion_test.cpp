@@ -2,6 +2,7 @@
 // exact expanded motion, plus the limits and the provenance chain.
 #include <gtest/gtest.h>
 
+#include "passes/macro/evaluator.h"
 #include "support/run_support.h"
 
 namespace gcx::test {
@@ -314,6 +315,63 @@ TEST(MacroSpec_10, TV32_DomainAndAssignmentErrors) {
   MacroRun bit = runMacro({{"O0001.nct", "#1100=0.4\nM30\n"}}, "O0001.nct", {1100});
   ASSERT_TRUE(bit.errors.empty()) << bit.rendered;
   EXPECT_EQ(value(bit, 1100), "1");
+}
+
+TEST(MacroSpec_10, TV27_MCodeMacroAndMCodeSubprogram) {
+  machine::Setup s;
+  s.parameters["N1743"] = 500;
+  s.parameters["N1744"] = 3500;
+  s.parameters["N1745"] = 20;
+  s.parameters["N1720"] = 60;
+  MacroRun r =
+      runMacro({{"O0001.nct", "#1=4\nN10 M505 X1.5 M3\nG0 X5 M60\nM30\n"},
+                {"SystemMacros/Channel1/O3505.nct", "#150=#24\n#151=#13\n#152=#1\nM505\nM99\n"},
+                {"SystemMacros/Channel1/O9000.nct", "#153=#1\nM60\nM99\n"}},
+               "O0001.nct", {150, 151, 152, 153}, s);
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(value(r, 150), "1.5");
+  EXPECT_EQ(value(r, 151), "3");
+  EXPECT_EQ(value(r, 152), "vac");
+  EXPECT_EQ(value(r, 153), "4");
+  EXPECT_EQ(withoutEnd(r.motion()), V{"R 5,0,0"});
+}
+
+TEST(MacroSpec_10, TV28_TCodeSubprogram) {
+  machine::Setup s;
+  s.parameters["N1746.TM"] = 1;
+  MacroRun r = runMacro({{"O0001.nct", "G0 X10 T5\nM30\n"},
+                         {"SystemMacros/Channel1/O9034.nct", "#150=#199\nT#199 M6\nM99\n"}},
+                        "O0001.nct", {150, 199}, s);
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(value(r, 199), "5");
+  EXPECT_EQ(value(r, 150), "5");
+  EXPECT_EQ(withoutEnd(r.motion()), (V{"R 10,0,0", "EV T5 M6"}));
+}
+
+TEST(MacroSpec_10, TV29_GCodeMacrosSingleAndModal) {
+  machine::Setup s;
+  s.parameters["N1704"] = 101;
+  s.parameters["N1705"] = -120;
+  MacroRun r = runMacro(
+      {{"O0001.nct", "G101 X5 P7 L2\nG120 Z-1\nG0 X10\nG1 Y10 F100\nG67\nG0 X0\nM30\n"},
+       {"SystemMacros/Channel1/O9010.nct", "#150=#24\n#151=#16\n#152=#12\n#153=#10\nM99\n"},
+       {"SystemMacros/Channel1/O9011.nct", "#160=#160+1\nM99\n"}},
+      "O0001.nct", {150, 151, 152, 153, 160}, s);
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(value(r, 150), "5");
+  EXPECT_EQ(value(r, 151), "7");
+  EXPECT_EQ(value(r, 152), "2");
+  EXPECT_EQ(value(r, 153), "101");
+  EXPECT_EQ(value(r, 160), "2");
+  EXPECT_EQ(withoutEnd(r.motion()), (V{"R 10,0,0", "L 10,10,0 F100", "R 0,10,0"}));
+}
+
+TEST(MacroSpec_12, VacantOrderSwitchForFanucControls) {
+  const macro::Value vacant = macro::Value::empty(), zero = macro::Value::of(0);
+  EXPECT_TRUE(macro::compare(vacant, ir::RelOp::Gt, zero)); // the manual's table (§2.5)
+  EXPECT_FALSE(macro::compare(vacant, ir::RelOp::Gt, zero, macro::VacantOrder::Fanuc));
+  EXPECT_TRUE(macro::compare(vacant, ir::RelOp::Ge, zero, macro::VacantOrder::Fanuc));
+  EXPECT_FALSE(macro::compare(vacant, ir::RelOp::Eq, zero, macro::VacantOrder::Fanuc));
 }
 
 TEST(MacroExpansion, RunawayLoopHitsTheJumpLimit) {

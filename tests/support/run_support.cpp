@@ -157,8 +157,10 @@ MacroRun runMacro(const std::map<std::string, std::string>& files, const std::st
   const fs::path dir =
       fs::temp_directory_path() / fmt::format("gcx-macro-{}-{}", ::getpid(), ++counter);
   fs::create_directories(dir);
-  for (const auto& [name, text] : files)
+  for (const auto& [name, text] : files) {
+    fs::create_directories((dir / name).parent_path());
     std::ofstream(dir / name, std::ios::binary) << text;
+  }
   MacroRun run;
   SourceManager sm;
   diag::Engine diags(100);
