@@ -167,8 +167,15 @@ bool Expander::statement(Frame& f, const ir::Block& b) {
     if (!print(s)) return false;
     ++f.pc;
     return true;
-  case ir::StmtKind::Popen:
+  case ir::StmtKind::Popen: // the periphery: `%`, then the first DPRNT names the file
+    periphery_ = Periphery::AwaitingName;
+    ++f.pc;
+    return true;
   case ir::StmtKind::Pclos:
+    if (periphery_ == Periphery::Open && print_) *print_ << "%\r\n";
+    periphery_ = Periphery::Closed;
+    ++f.pc;
+    return true;
   case ir::StmtKind::Fopen:
   case ir::StmtKind::Fclos: // the print channel is the run's print output (DPRNT)
     ++f.pc;
@@ -286,6 +293,18 @@ bool Expander::message(const ir::Stmt& s, int variable, const Value& v) {
 
 // DPRNT[...]: text and #v[cd] values (§6): c integer digits, d decimals, rounded, vacant = 0
 bool Expander::print(const ir::Stmt& s) {
+  // after POPEN the first DPRNT names the output file (§6); gcx writes it to the print output
+  if (periphery_ == Periphery::AwaitingName && !s.binaryPrint) {
+    std::string name;
+    for (const ir::PrintItem& it : s.items)
+      name += it.isVariable ? "" : it.text;
+    if (print_) *print_ << "(file " << name << ")\r\n%\r\n";
+    periphery_ = Periphery::Open;
+    return true;
+  }
+  // N1757 #0 PNT: 0 = '+' and leading zeros as spaces, 1 = omitted
+  const bool omit =
+      machine_.parameter("N1757.PNT", 0) == 1 || machine_.parameter("N1757.0", 0) == 1;
   std::string line;
   for (const ir::PrintItem& it : s.items) {
     if (!it.isVariable) {
@@ -295,17 +314,26 @@ bool Expander::print(const ir::Stmt& s) {
     }
     auto v = read(it.variable, s.range);
     if (!v) return false;
-    const double x = v->orZero();
-    if (s.binaryPrint) {
-      line +=
-          fmt::format("{}", static_cast<long long>(std::llround(x * std::pow(10, it.fracDigits))));
+    const double x = v->orZero(); // vacant prints as 0
+    if (s.binaryPrint) {          // #v[c]: round(v * 10^c) as a 4-byte big-endian integer
+      const int exponent = it.fracDigits ? it.fracDigits : it.intDigits;
+      const auto n = static_cast<std::uint32_t>(
+          static_cast<std::int32_t>(std::llround(x * std::pow(10.0, exponent))));
+      for (int shift = 24; shift >= 0; shift -= 8)
+        line += static_cast<char>((n >> shift) & 0xFF);
       continue;
     }
-    std::string digits = fmt::format("{:.{}f}", std::fabs(x), it.fracDigits);
-    if (x < 0) line += '-';
-    line += digits;
+    // #v[cd]: c integer digits, d decimals, rounded; sign '-' (or a space for '+')
+    const std::string digits = fmt::format("{:.{}f}", std::fabs(x), it.fracDigits);
+    const std::size_t point = digits.find('.');
+    std::string integer = digits.substr(0, point);
+    const std::string fraction = point == std::string::npos ? "" : digits.substr(point);
+    if (!omit && static_cast<int>(integer.size()) < it.intDigits)
+      integer.insert(0, it.intDigits - integer.size(), ' ');
+    line += x < 0 ? "-" : omit ? "" : " ";
+    line += integer + fraction;
   }
-  if (print_) *print_ << line << '\n';
+  if (print_) *print_ << line << "\r\n";
   return true;
 }
 
@@ -542,6 +570,12 @@ std::optional<Expander::ConfiguredCall> Expander::configuredCall(const ir::Block
       for (int i = 0; i < 5; ++i)
         if (w.address[0] == letters[i] && bit(1746, i, names[i]))
           take({ConfiguredCall::SubprogramLetter, 9030 + i, &w, 195 + i});
+      // N1747-N1750: four letters (their ASCII codes) calling the programs of N1751-N1754,
+      // the value in #191-#194
+      for (int i = 0; i < 4; ++i)
+        if (prm(1747 + i) == static_cast<unsigned char>(w.address[0]) && prm(1751 + i) > 0)
+          take({ConfiguredCall::SubprogramLetter, static_cast<std::int64_t>(prm(1751 + i)), &w,
+                191 + i});
     }
   }
   if (conflict) return std::nullopt;

@@ -125,6 +125,7 @@ private:
   std::map<int, Value> commons_;
   std::uint64_t jumps_ = 0, blocks_ = 0;
   std::ostream* print_ = nullptr;
+  enum class Periphery { Closed, AwaitingName, Open } periphery_ = Periphery::Closed;
   std::function<void(const ir::Block&)> onFlat_;
   bool done_ = false;
 };

@@ -366,6 +366,35 @@ TEST(MacroSpec_10, TV29_GCodeMacrosSingleAndModal) {
   EXPECT_EQ(withoutEnd(r.motion()), (V{"R 10,0,0", "L 10,10,0 F100", "R 0,10,0"}));
 }
 
+TEST(MacroSpec_10, TV25_DprntAndBprnt) {
+  const std::string program = "#130=35.897421\n#500=-150.8\n#10=14.8\n#110=318.49362\n"
+                              "#120=0.723415\n#112=23.9\nPOPEN31\nDPRNT[RESULT]\n"
+                              "DPRNT[X#130[53]Y#500[53]T#10[20]]\n"
+                              "BPRNT[C*/X#110[3]Y#120[3]M#112[0]]\nPCLOS31\nM30\n";
+  MacroRun r = runMacro({{"O0001.nct", program}}, "O0001.nct");
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  const std::string bprnt("\x43\x20\x2F\x58\x00\x04\xDC\x1E\x59\x00\x00\x02\xD3\x4D\x00\x00"
+                          "\x00\x18\x0D\x0A",
+                          20);
+  EXPECT_EQ(r.printed, "(file RESULT)\r\n%\r\nX    35.897Y-  150.800T 15\r\n" + bprnt + "%\r\n");
+  EXPECT_EQ(withoutEnd(r.motion()), V{});
+  machine::Setup pnt;
+  pnt.parameters["N1757.PNT"] = 1;
+  MacroRun omitted = runMacro({{"O0001.nct", program}}, "O0001.nct", {}, pnt);
+  EXPECT_NE(omitted.printed.find("X35.897Y-150.800T15\r\n"), std::string::npos);
+}
+
+TEST(MacroSpec_5_8, AsciiLetterSubprogramCall) {
+  machine::Setup s;
+  s.parameters["N1747"] = 'Q'; // the letter Q (ASCII 81) calls O0777, its value in #191
+  s.parameters["N1751"] = 777;
+  MacroRun r = runMacro({{"O0001.nct", "G0 X1 Q42\nM30\n"}, {"O0777.nct", "#150=#191\nM99\n"}},
+                        "O0001.nct", {150, 191}, s);
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(value(r, 150), "42");
+  EXPECT_EQ(withoutEnd(r.motion()), V{"R 1,0,0"});
+}
+
 TEST(MacroSpec_12, VacantOrderSwitchForFanucControls) {
   const macro::Value vacant = macro::Value::empty(), zero = macro::Value::of(0);
   EXPECT_TRUE(macro::compare(vacant, ir::RelOp::Gt, zero)); // the manual's table (§2.5)
