@@ -86,7 +86,15 @@ bool Expander::run(const LoadedProgram& main) {
   locals_.assign(1, {});
   done_ = false;
   while (!done_)
-    if (!step()) return false;
+    if (!step()) {
+      // errors reported below the pass (evaluator, machine) get the call chain as notes too
+      if (diag::Diagnostic* d = diags_.lastError(); d && d->notes.empty()) {
+        const motion::Provenance p = provenance(ir::Block{});
+        for (auto it = p.chain.rbegin(); it != p.chain.rend(); ++it)
+          d->notes.push_back({SourceRange{it->call, 1}, "in " + it->what});
+      }
+      return false;
+    }
   return !diags_.hasErrors();
 }
 

@@ -25,6 +25,12 @@ void Engine::report(Diagnostic d) {
   list_.push_back(std::move(d));
 }
 
+Diagnostic* Engine::lastError() {
+  for (auto it = list_.rbegin(); it != list_.rend(); ++it)
+    if (it->severity == Severity::Error) return &*it;
+  return nullptr;
+}
+
 void Engine::error(const char* c, SourceRange where, std::string message) {
   report(Diagnostic{Severity::Error, c, std::move(message), where, {}});
 }

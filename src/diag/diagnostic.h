@@ -38,6 +38,8 @@ public:
   bool hasErrors() const { return errors_ != 0; }
   bool limitReached() const { return errors_ >= errorLimit_; }
   const std::vector<Diagnostic>& all() const { return list_; }
+  /// The last error reported, to chain notes under it (the call chain of a macro run), or null.
+  Diagnostic* lastError();
   void clear() { list_.clear(), errors_ = warnings_ = 0; }
 
 private:

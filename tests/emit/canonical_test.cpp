@@ -154,3 +154,29 @@ TEST(Canonical, Rs274ReproducesRotaryMoves) {
 
 } // namespace
 } // namespace gcx::emit
+
+namespace gcx::emit {
+namespace {
+
+TEST(Canonical, ProvenanceCommentNamesTheCallChain) {
+  std::ostringstream out;
+  CanonicalOptions opt;
+  opt.provenance = true;
+  opt.fileName = [](FileId) { return std::string("O0030.nct"); };
+  CanonicalEmitter emitter(out, opt);
+  motion::Event e;
+  e.kind = motion::Kind::Rapid;
+  e.end = motion::Vec3(1, 2, 3);
+  e.from.at = SourceLoc{0, 4, 1, 0};
+  e.from.chain = {{SourceLoc{0, 1, 1, 0}, "O0020 (M98 P20)"},
+                  {SourceLoc{0, 2, 1, 0}, "O0030 (G65 P30)"},
+                  {SourceLoc{0, 2, 1, 0}, "loop DO1 iteration 2"}};
+  emitter.event(e);
+  EXPECT_NE(out.str().find("G0 X1 Y2 Z3 (O0030.nct:4, in loop DO1 iteration 2, in O0030 (G65 P30), "
+                           "in O0020 (M98 P20))\n"),
+            std::string::npos)
+      << out.str();
+}
+
+} // namespace
+} // namespace gcx::emit

@@ -441,3 +441,29 @@ TEST(MacroExpansion, ProvenanceNamesTheWholeChain) {
 
 } // namespace
 } // namespace gcx::test
+
+namespace gcx::test {
+namespace {
+
+TEST(MacroSpec_9, G10L52WritesAParameterThatPrmReadsAndTheMachineUses) {
+  // N1339 Radius Diff 0.5 accepts an arc whose end radius is 0.3 off (else alarm 2012)
+  MacroRun r = runMacro({{"O0001.nct", "G10 L52\nN1339 R0.5\nG11\n#1=PRM[1339]\n"
+                                       "G0 X10 Y0\nG3 X-10.3 Y0 I-10 F100\nM30\n"}},
+                        "O0001.nct", {1});
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(value(r, 1), "0.5");
+  EXPECT_EQ(r.motion().at(1), "CCW -10.3,0,0 C0,0 r10->10.3 θ180");
+}
+
+TEST(MacroExpansion, ErrorInACallCarriesTheCallChainAsNotes) {
+  MacroRun r = runMacro({{"O0001.nct", "G65 P30 A1\nM30\n"},
+                         {"O0030.nct", "M98 P20\nM99\n"},
+                         {"O0020.nct", "#2=1/0\nM99\n"}},
+                        "O0001.nct");
+  EXPECT_EQ(r.errors, V{"O0020.nct:1:4 2093"});
+  EXPECT_NE(r.rendered.find("note: in O0030 (G65 P30)"), std::string::npos) << r.rendered;
+  EXPECT_NE(r.rendered.find("note: in O0020 (M98 P20)"), std::string::npos) << r.rendered;
+}
+
+} // namespace
+} // namespace gcx::test
