@@ -203,7 +203,8 @@ void StaticChecker::statement(const ir::Stmt& s) {
   case ir::StmtKind::Goto:
   case ir::StmtKind::IfGoto:
     if (s.value.kind == ir::ExprKind::Number)
-      jumps_.push_back({static_cast<std::int64_t>(std::llround(s.value.number)), s.range});
+      jumps_.push_back({static_cast<std::int64_t>(std::llround(s.value.number)), s.range,
+                        s.kind == ir::StmtKind::IfGoto});
     return;
   default:
     return;
@@ -215,10 +216,17 @@ void StaticChecker::finish(FileId file, bool hadBadBlocks) {
     diags_.error(diag::code::LoopPairing, l.where,
                  fmt::format("DO{} without END{} in this file", l.id, l.id));
   loops_.clear();
-  for (const Jump& j : jumps_)
-    if (!labels_.count(j.target))
+  for (const Jump& j : jumps_) {
+    if (labels_.count(j.target)) continue;
+    if (j.conditional) // legal until taken: the run stops with 2125 if it ever is (§4.2)
+      diags_.warning(diag::code::BlockNotFound, j.where,
+                     fmt::format("block N{} not found in this file: alarm 2125 if the jump is "
+                                 "taken",
+                                 j.target));
+    else
       diags_.error(diag::code::BlockNotFound, j.where,
                    fmt::format("block N{} not found in this file", j.target));
+  }
   jumps_.clear();
   if (blocks_ == 0 && !hadBadBlocks)
     diags_.error(diag::code::EmptyProgram, SourceRange{SourceLoc{file, 1, 1, 0}, 0},

@@ -35,6 +35,7 @@ private:
   struct Jump {
     std::int64_t target;
     SourceRange where;
+    bool conditional; // IF[...]GOTO: the control alarms only when the jump is taken
   };
 
   const Profile& profile_;

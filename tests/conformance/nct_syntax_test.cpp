@@ -249,3 +249,15 @@ TEST(MacroSpec_6, PrintCommands) {
 
 } // namespace
 } // namespace gcx::test
+
+namespace gcx::test {
+namespace {
+
+TEST(MacroSpec_4_2, IfGotoToAMissingBlockWarnsUntilTaken) {
+  Parsed p = parseNct("#1=1\nIF[#1EQ2]GOTO77\nM30\n");
+  EXPECT_TRUE(p.errors().empty()) << p.rendered();
+  EXPECT_EQ(p.warnings(), std::vector<std::string>{"2:1 2125"});
+}
+
+} // namespace
+} // namespace gcx::test
