@@ -19,17 +19,6 @@ std::string xyz(const motion::Vec3& p) {
   return fmt::format("X{} Y{} Z{}", num(p.x()), num(p.y()), num(p.z()));
 }
 
-const char* planeCode(motion::Plane p) {
-  switch (p) {
-  case motion::Plane::XY:
-    return "G17";
-  case motion::Plane::ZX:
-    return "G18";
-  case motion::Plane::YZ:
-    return "G19";
-  }
-  return "G17";
-}
 } // namespace
 
 CanonicalEmitter::CanonicalEmitter(std::ostream& out, CanonicalOptions opt)
@@ -112,7 +101,7 @@ void CanonicalEmitter::event(const motion::Event& e) {
     }
     if (e.plane != plane_) {
       plane_ = e.plane;
-      line(planeCode(plane_), e);
+      line(motion::planeCode(plane_), e);
     }
     const motion::Vec3 d = e.center - e.start;
     const motion::PlaneAxes ax = motion::axesOf(e.plane);

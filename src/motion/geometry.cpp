@@ -14,6 +14,18 @@ constexpr double kTwoPi = 2 * std::numbers::pi;
 constexpr double kSameDirection = 1e-9;
 } // namespace
 
+const char* planeCode(Plane p) {
+  switch (p) {
+  case Plane::XY:
+    return "G17";
+  case Plane::ZX:
+    return "G18";
+  case Plane::YZ:
+    return "G19";
+  }
+  return "G17";
+}
+
 PlaneAxes axesOf(Plane p) {
   switch (p) {
   case Plane::XY:

@@ -23,6 +23,8 @@ struct PlaneAxes {
   int first, second, normal;
 };
 PlaneAxes axesOf(Plane p);
+/// The RS274/NGC code selecting the plane: "G17", "G18", "G19".
+const char* planeCode(Plane p);
 
 class ArcGeometry {
 public:

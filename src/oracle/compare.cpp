@@ -1,5 +1,7 @@
 #include "oracle/compare.h"
 
+#include "motion/geometry.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -98,18 +100,6 @@ std::string fmtVec(const Vec3& v) {
   return fmt::format("({:.4f}, {:.4f}, {:.4f})", z(v.x()), z(v.y()), z(v.z()));
 }
 
-const char* planeName(motion::Plane p) {
-  switch (p) {
-  case motion::Plane::XY:
-    return "G17";
-  case motion::Plane::ZX:
-    return "G18";
-  case motion::Plane::YZ:
-    return "G19";
-  }
-  return "?";
-}
-
 /// " A 0.0000 -> 90.0000" for each extra axis off zero at either end of a move.
 std::string fmtExtra(const Event& e) {
   auto z = [](double d) { return std::abs(d) < 5e-5 ? 0.0 : d; };
@@ -175,7 +165,8 @@ std::string mismatch(const Event& a, const Event& b, const CompareOptions& o) {
     }
     if (a.kind == Kind::Arc) {
       if (a.plane != b.plane)
-        return fmt::format("arc planes differ: {} vs {}", planeName(a.plane), planeName(b.plane));
+        return fmt::format("arc planes differ: {} vs {}", motion::planeCode(a.plane),
+                           motion::planeCode(b.plane));
       if (a.clockwise != b.clockwise)
         return fmt::format("arc directions differ: {} vs {}", a.clockwise ? "CW" : "CCW",
                            b.clockwise ? "CW" : "CCW");
@@ -270,7 +261,7 @@ std::string describe(const Event& e) {
   case Kind::Feed:
     return fmt::format("Feed {} -> {}{}{}", fmtVec(e.start), fmtVec(e.end), fmtExtra(e), feed);
   case Kind::Arc: {
-    std::string s = fmt::format("Arc {} {} {} -> {}{} centre {}", planeName(e.plane),
+    std::string s = fmt::format("Arc {} {} {} -> {}{} centre {}", motion::planeCode(e.plane),
                                 e.clockwise ? "CW" : "CCW", fmtVec(e.start), fmtVec(e.end),
                                 fmtExtra(e), fmtVec(e.center));
     if (e.turns != 0) s += fmt::format(" +{} turns", e.turns);
@@ -300,7 +291,8 @@ std::string describe(const Event& e) {
   case Kind::Message:
     return fmt::format("Message \"{}\"", e.text);
   case Kind::PlaneChange:
-    return fmt::format("PlaneChange {}{}{}", planeName(e.plane), e.text.empty() ? "" : " ", e.text);
+    return fmt::format("PlaneChange {}{}{}", motion::planeCode(e.plane), e.text.empty() ? "" : " ",
+                       e.text);
   case Kind::UnitsChange:
     return fmt::format("UnitsChange G{}", e.value);
   case Kind::FeedModeChange:
