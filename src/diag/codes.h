@@ -88,4 +88,15 @@ inline constexpr const char* BitValueRange = "2092";
 inline constexpr const char* VacantToSystem = "NCTX05";
 inline constexpr const char* RuntimeOnlyVariable = "NCTW01";
 
+// --- cycles (cycles.md §7): drilling-cycle data and machine support
+inline constexpr const char* CycleNoData = "2053";        // no bottom point or R point
+inline constexpr const char* CycleNoOrientation = "2137"; // G76 without spindle orientation
+inline constexpr const char* CycleNotIndexable = "2138";  // G84.2/G84.3: spindle not indexable
+inline constexpr const char* CycleQMissing = "CYC-Q-MISSING";
+inline constexpr const char* CycleQNegative = "CYC-Q-NEGATIVE";
+inline constexpr const char* CycleLRange = "CYC-L-RANGE";
+inline constexpr const char* CycleCylindrical = "CYC-CYLINDRICAL";      // in G7.1 (no number given)
+inline constexpr const char* CycleSpindleDirection = "CYC-SPINDLE-DIR"; // warning
+inline constexpr const char* CycleRadiusComp = "CYC-RADCOMP";           // warning (§9 Q-20)
+
 } // namespace gcx::diag::code

@@ -1,0 +1,128 @@
+#include "passes/cycles/drilling_state.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "diag/codes.h"
+#include "machine/setup.h"
+
+namespace gcx::cycles {
+
+namespace {
+
+struct CodeRow {
+  int code10;
+  DrillCycle cycle;
+  const char* name;
+};
+
+// cycles.md §2.1; the CSM=1 aliases (000:9469-9473) come last so that cycleName gives G73...
+constexpr CodeRow kCodes[] = {
+    {730, DrillCycle::G73, "G73"},     {740, DrillCycle::G74, "G74"},
+    {760, DrillCycle::G76, "G76"},     {810, DrillCycle::G81, "G81"},
+    {820, DrillCycle::G82, "G82"},     {830, DrillCycle::G83, "G83"},
+    {840, DrillCycle::G84, "G84"},     {842, DrillCycle::G84_2, "G84.2"},
+    {843, DrillCycle::G84_3, "G84.3"}, {850, DrillCycle::G85, "G85"},
+    {860, DrillCycle::G86, "G86"},     {870, DrillCycle::G87, "G87"},
+    {880, DrillCycle::G88, "G88"},     {890, DrillCycle::G89, "G89"},
+    {831, DrillCycle::G73, "G83.1"},   {841, DrillCycle::G74, "G84.1"},
+    {861, DrillCycle::G76, "G86.1"},
+};
+
+constexpr double kMaxRepetitions = 99999999; // 000:9616
+
+bool negative(const std::optional<DrillWord>& w, char address, diag::Engine& diags,
+              const SourceRange& block) {
+  if (!w || w->value >= 0) return false;
+  diags.error(diag::code::CycleQNegative, w->range.begin.valid() ? w->range : block,
+              fmt::format("{} must be positive in a drilling cycle (000:9584, 9590)", address));
+  return true;
+}
+
+} // namespace
+
+std::optional<DrillCycle> drillCycleFromCode10(int code10) {
+  for (const CodeRow& r : kCodes)
+    if (r.code10 == code10) return r.cycle;
+  return std::nullopt;
+}
+
+const char* cycleName(DrillCycle c) {
+  for (const CodeRow& r : kCodes)
+    if (r.cycle == c) return r.name;
+  return "G8?";
+}
+
+std::optional<long> updateModal(DrillModal& m, const DrillWords& w, diag::Engine& diags) {
+  if (!m.cycle && !w.code) return 0; // not in cycle mode: Q, E, L... mean something else
+  const DrillVariables& in = w.vars;
+  if (negative(in.q, 'Q', diags, w.range) || negative(in.e, 'E', diags, w.range))
+    return std::nullopt;
+  long holes = 1;
+  if (w.l) {
+    const double l = w.l->value;
+    if (!(l >= 0 && l <= kMaxRepetitions) || l != std::floor(l)) {
+      diags.error(diag::code::CycleLRange, w.l->range.begin.valid() ? w.l->range : w.range,
+                  "repetition count L must be 0-99999999 (000:9616)");
+      return std::nullopt;
+    }
+    holes = static_cast<long>(l);
+  }
+  if (!m.cycle) { // entering cycle mode (000:9485-9493)
+    m.axis = w.axis;
+    m.initial = w.axisPosition;
+  } else if (m.axis != w.axis) { // a new drilling axis (000:9494-9505)
+    m.axis = w.axis;
+    m.initial = w.axisPosition;
+    m.vars.r.reset();
+  }
+  if (w.code) m.cycle = w.code;
+  DrillVariables& v = m.vars;
+  if (in.z) v.z = in.z;
+  if (in.r) v.r = in.r; // stored even without a hole (§9 Q-4)
+  if (!w.holeWord && !in.z) return 0;
+  // I J K Q E P count only in a block that drills (000:10338-10340)
+  auto keep = [](const std::optional<DrillWord>& from, std::optional<DrillWord>& to) {
+    if (from) to = from;
+  };
+  keep(in.q, v.q), keep(in.e, v.e), keep(in.p, v.p);
+  keep(in.i, v.i), keep(in.j, v.j), keep(in.k, v.k);
+  if (!v.z || !v.r) {
+    diags.error(diag::code::CycleNoData, w.range,
+                fmt::format("no bottom point or R point: {} missing for {} (000:9503-9505, 9624)",
+                            !v.z && !v.r ? "the drilling-axis word and R"
+                            : !v.z       ? "the drilling-axis word"
+                                         : "R",
+                            cycleName(*m.cycle)));
+    return std::nullopt;
+  }
+  return holes; // L0: the data are stored, nothing moves (000:9617)
+}
+
+DrillConfig drillConfig(const machine::Setup& setup) {
+  const DrillConfig d;
+  auto value = [&](const char* key, double fallback) { return setup.parameter(key, fallback); };
+  // A bit by name ("N0607.ORI") or, where the manual numbers it, by number ("N0607.1").
+  auto bit = [&](const char* name, const char* number, bool fallback) {
+    const double byNumber = number ? value(number, fallback ? 1 : 0) : (fallback ? 1 : 0);
+    return value(name, byNumber) != 0;
+  };
+  DrillConfig c;
+  c.returnG73 = value("N1500", d.returnG73);
+  c.clearanceG83 = value("N1501", d.clearanceG83);
+  c.extractionG85G89 = value("N1502", d.extractionG85G89);
+  c.tapReturn = value("N1504", d.tapReturn);
+  c.tapClearance = value("N1505", d.tapClearance);
+  c.tapExtraction = value("N1506", d.tapExtraction);
+  c.tapReturnOverride = value("N1507", d.tapReturnOverride);
+  c.tapOrient = bit("N1503.TSC", nullptr, d.tapOrient);                   // 000:9990-9998
+  c.tapNormalPeck = bit("N1503.PTC", "N1503.3", d.tapNormalPeck);         // 000:10057
+  c.extractionEnabled = bit("N1503.EOE", "N1503.4", d.extractionEnabled); // 000:10015
+  c.returnEnabled = bit("N1503.ROE", "N1503.5", d.returnEnabled);         // 000:10094
+  c.orient = bit("N0607.ORI", "N0607.1", d.orient);                       // 000:10167
+  c.indexable = bit("N0607.INX", "N0607.2", d.indexable);                 // 000:4559
+  c.closeLoopMCode = static_cast<int>(value("N0823", d.closeLoopMCode));  // 000:9993
+  return c;
+}
+
+} // namespace gcx::cycles
