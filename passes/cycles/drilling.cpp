@@ -125,7 +125,9 @@ void rigidTapHole(Ops& o, const Hole& h, const DrillRequest& req, const DrillCon
   const double speed = req.spindleSpeed;
   // the retract override applies only with EOE=1: I, else N1506 (000:10012-10020, 10072-10080)
   const double extract =
-      cfg.extractionEnabled ? (req.vars.i ? req.vars.i->value : cfg.tapExtraction) : 100;
+      cfg.extractionEnabled
+          ? (req.vars.overridePercent ? req.vars.overridePercent->value : cfg.tapExtraction)
+          : 100;
   o.step(4);
   if (cfg.tapOrient)
     o.op(OpKind::SpindleOrient); // TSC=1 (000:9997-9998)
@@ -225,7 +227,8 @@ void standardHole(Ops& o, const Hole& h, const DrillRequest& req, const DrillCon
   }
   case DrillCycle::G85:
   case DrillCycle::G89: { // feed retract at F*I/100 (000:10124-10133, 10308-10318)
-    const double percent = req.vars.i ? req.vars.i->value : cfg.extractionG85G89;
+    const double percent =
+        req.vars.overridePercent ? req.vars.overridePercent->value : cfg.extractionG85G89;
     o.feedLevel(h.z, h.feed);
     o.step(6);
     if (req.cycle == DrillCycle::G89) o.dwell(h.dwell);
@@ -327,8 +330,8 @@ bool resolve(const DrillRequest& req, const SourceRange& where, const DrillConfi
   }
   const bool overrideI = req.cycle == DrillCycle::G85 || req.cycle == DrillCycle::G89 ||
                          (rigidTap(req.cycle) && cfg.extractionEnabled);
-  if (overrideI && v.i && v.i->value <= 0) {
-    diags.error(diag::code::DataOutOfRange, wordRange(v.i, where),
+  if (overrideI && v.overridePercent && v.overridePercent->value <= 0) {
+    diags.error(diag::code::DataOutOfRange, wordRange(v.overridePercent, where),
                 fmt::format("{}: the retract override I must be > 0 %", name));
     return false;
   }

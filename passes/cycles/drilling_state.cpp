@@ -87,6 +87,7 @@ std::optional<long> updateModal(DrillModal& m, const DrillWords& w, diag::Engine
   };
   keep(in.q, v.q), keep(in.e, v.e), keep(in.p, v.p);
   keep(in.i, v.i), keep(in.j, v.j), keep(in.k, v.k);
+  keep(in.overridePercent ? in.overridePercent : in.i, v.overridePercent);
   if (!v.z || !v.r) {
     diags.error(diag::code::CycleNoData, w.range,
                 fmt::format("no bottom point or R point: {} missing for {} (000:9503-9505, 9624)",

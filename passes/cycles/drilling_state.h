@@ -65,6 +65,8 @@ struct DrillVariables {
   /// J K in G19; always incremental, 000:9550-9556), and I as the retract override in % of
   /// G85, G89, G84.2, G84.3.
   std::optional<DrillWord> i, j, k;
+  /// I as written, for its percent meaning (never converted from inch); stored with i.
+  std::optional<DrillWord> overridePercent;
 };
 
 /// What a control remembers between blocks while cycle mode is on. cancel() at G80, at any

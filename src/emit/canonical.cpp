@@ -79,6 +79,10 @@ void CanonicalEmitter::event(const motion::Event& e) {
     straight(e, "G0", e.end, e.extraEnd, false);
     return;
   case Kind::Feed:
+    if (e.lead > 0) { // spindle-synchronised: G33 with the lead per revolution as K
+      line(fmt::format("G33 {}{} K{}", xyz(e.end), extraWords(e.extraEnd), num(e.lead)), e);
+      return;
+    }
     feedMode(e);
     straight(e, "G1", e.end, e.extraEnd, true);
     return;
@@ -152,6 +156,9 @@ void CanonicalEmitter::event(const motion::Event& e) {
     return;
   case Kind::Message:
     line("(MSG," + e.text + ")", e);
+    return;
+  case Kind::OverrideLock: // LinuxCNC: M49 disables the feed and speed overrides, M48 enables
+    line(e.value != 0 ? "M49" : "M48", e);
     return;
   case Kind::PlaneChange:
   case Kind::UnitsChange:

@@ -51,6 +51,7 @@ void Interpreter::resetModal() {
   const double speed = state_.spindleSpeed, feed = state_.feed;
   const int direction = state_.spindleDirection;
   state_ = ModalState{};
+  cycles::cancel(drill_);
   state_.tool = tool, state_.selectedTool = selected;
   state_.spindleSpeed = speed, state_.spindleDirection = direction, state_.feed = feed;
   modalCodes_.fill(0);
@@ -133,7 +134,8 @@ void Interpreter::emit(motion::Event e) {
   sink_.event(e);
 }
 
-void Interpreter::emitLine(Kind kind, const Vec3& to, const motion::Extra& extraTo) {
+void Interpreter::emitLine(Kind kind, const Vec3& to, const motion::Extra& extraTo, double feed,
+                           double lead) {
   if (to == machine_ && extraTo == extra_) return; // a zero-length block moves nothing (TV13)
   motion::Event e;
   e.kind = kind;
@@ -142,7 +144,8 @@ void Interpreter::emitLine(Kind kind, const Vec3& to, const motion::Extra& extra
   e.extraStart = extra_;
   e.extraEnd = extraTo;
   extra_ = extraTo;
-  e.feed = state_.feed;
+  e.feed = feed;
+  e.lead = lead;
   e.perRevolution = state_.perRevolution;
   machine_ = to;
   emit(std::move(e));
@@ -198,6 +201,7 @@ bool Interpreter::execute(const ir::Block& block, const motion::Provenance& from
   emitModalChanges(before);
   bool consumed = false;
   if (!applyNonMotion(w, consumed)) return false;
+  if (state_.cycle == GAction::DrillCycle && !deferCycles_) return drillBlock(w, consumed);
   const bool arcWithCentreOnly =
       (state_.motion == GAction::ArcCW || state_.motion == GAction::ArcCCW) &&
       (w.ijk[0] || w.ijk[1] || w.ijk[2]);
@@ -213,6 +217,7 @@ bool Interpreter::setModal(const GCodeSpec& g) {
   case GAction::ArcCW:
   case GAction::ArcCCW:
     state_.motion = g.action;
+    if (state_.cycle == GAction::DrillCycle) cancelCycleMode(); // like G80 (000:9479-9480)
     return true;
   case GAction::PlaneXY:
     state_.plane = Plane::XY;
@@ -254,7 +259,7 @@ bool Interpreter::setModal(const GCodeSpec& g) {
     state_.feedControl = g.action;
     return true;
   case GAction::CycleCancel:
-    state_.cycle = GAction::CycleCancel;
+    cancelCycleMode();
     return true;
   case GAction::RadiusCompOff:
     state_.radiusComp = g.action;
@@ -262,9 +267,10 @@ bool Interpreter::setModal(const GCodeSpec& g) {
   case GAction::WorkOffset:
     state_.workOffset = g.arg;
     return true;
-  // recorded by the control, without effect on the motion model
   case GAction::ReturnInitial:
   case GAction::ReturnR:
+    state_.returnToR = g.action == GAction::ReturnR;
+    return true;
   case GAction::SurfaceSpeedOff:
     state_.surfaceSpeed = false;
     return true;
@@ -325,11 +331,10 @@ bool Interpreter::applyModal(const BlockWords& w) {
     case GAction::DiameterMode:
       break; // applyNonMotion
     case GAction::DrillCycle:
+      state_.cycle = g->action; // drillBlock() stores the block's data and drills
+      break;
     case GAction::TurningCycle:
-      if (deferCycles_) {
-        if (g->action == GAction::DrillCycle) state_.cycle = g->action;
-        break;
-      }
+      if (deferCycles_) break;
       [[fallthrough]];
     default:
       return fail(diag::code::NotImplemented, word.range,
@@ -440,12 +445,7 @@ bool Interpreter::applyNonMotion(const BlockWords& w, bool& consumed) {
       return fail(diag::code::DwellWithoutP, w.axis[0]->range,
                   "G4 takes P (seconds, or revolutions in G95); X is not defined in NCT (Q37)");
     if (!w.p) return fail(diag::code::MissingData, g->range, "G4 without P");
-    motion::Event e;
-    e.kind = Kind::Dwell;
-    e.start = e.end = machine_;
-    e.value = w.p->number;
-    e.perRevolution = state_.perRevolution && setup_.parameter("N1337.SEC", 0) == 0;
-    emit(std::move(e));
+    emitDwell(w.p->number);
   }
   if (w.has(GAction::DataInput)) {
     consumed = true;
@@ -742,9 +742,7 @@ Vec3 Interpreter::target(const BlockWords& w, bool allowPolar) const {
 }
 
 bool Interpreter::move(const BlockWords& w) {
-  if (state_.cycle != GAction::CycleCancel) {
-    if (!deferCycles_)
-      return fail(diag::code::NotImplemented, blockRange_, "canned cycles are not implemented yet");
+  if (state_.cycle != GAction::CycleCancel) { // --to nct keeps the cycle: only track the hole
     const motion::PlaneAxes ax = motion::axesOf(state_.plane);
     const Vec3 hole = target(w, true);
     program_[ax.first] = hole[ax.first];
@@ -910,15 +908,7 @@ bool Interpreter::afterMotion(const BlockWords& w) {
       spindleChanged = true;
     }
   }
-  if (spindleChanged) {
-    motion::Event e;
-    e.kind = Kind::Spindle;
-    e.start = e.end = machine_;
-    e.extraStart = e.extraEnd = extra_;
-    e.value = state_.spindleSpeed;
-    e.direction = state_.spindleDirection;
-    emit(std::move(e));
-  }
+  if (spindleChanged) emitSpindle();
   for (const ir::Word* m : w.m) {
     const int code = static_cast<int>(m->number);
     motion::Event e;
@@ -969,6 +959,26 @@ bool Interpreter::afterMotion(const BlockWords& w) {
     emit(std::move(e));
   }
   return true;
+}
+
+void Interpreter::emitDwell(double p) {
+  motion::Event e;
+  e.kind = Kind::Dwell;
+  e.start = e.end = machine_;
+  e.extraStart = e.extraEnd = extra_;
+  e.value = p; // seconds, or revolutions under G95 unless N1337 SEC=1 (000:3427-3442)
+  e.perRevolution = state_.perRevolution && setup_.parameter("N1337.SEC", 0) == 0;
+  emit(std::move(e));
+}
+
+void Interpreter::emitSpindle() {
+  motion::Event e;
+  e.kind = Kind::Spindle;
+  e.start = e.end = machine_;
+  e.extraStart = e.extraEnd = extra_;
+  e.value = state_.spindleSpeed;
+  e.direction = state_.spindleDirection;
+  emit(std::move(e));
 }
 
 void Interpreter::message(const std::string& text, const motion::Provenance& from, bool stop) {

@@ -16,6 +16,7 @@
 #include "machine/setup.h"
 #include "machine/transforms.h"
 #include "motion/event.h"
+#include "passes/cycles/drilling.h"
 
 namespace gcx::machine {
 
@@ -32,6 +33,7 @@ struct ModalState {
   int lengthRegister = 0; // H
   GAction radiusComp = GAction::RadiusCompOff;
   GAction cycle = GAction::CycleCancel;
+  bool returnToR = false; // G99 (group 10); G98 at power-on, reset and cycle cancel
   GAction feedControl = GAction::ContinuousMode;
   double feed = 0; // mm/min or mm/rev
   double spindleSpeed = 0;
@@ -149,8 +151,26 @@ private:
   bool referenceReturn(const BlockWords& w, int point);
   bool machineMove(const BlockWords& w);
   bool transforms(const BlockWords& w);
-  void emitLine(motion::Kind kind, const Vec3& to, const motion::Extra& extraTo);
+  /// A straight move; `lead` > 0 makes a feed spindle-synchronised (G33, rigid tapping).
+  void emitLine(motion::Kind kind, const Vec3& to, const motion::Extra& extraTo, double feed,
+                double lead = 0);
+  void emitLine(motion::Kind kind, const Vec3& to, const motion::Extra& extraTo) {
+    emitLine(kind, to, extraTo, state_.feed);
+  }
   void emitLine(motion::Kind kind, const Vec3& to) { emitLine(kind, to, extra_); }
+  void emitDwell(double p);
+  void emitSpindle();
+
+  // --- drilling cycles (drill_cycles.cpp, cycles.md §2-§3) -------------------------------
+  /// A block executed in cycle mode: stores its cycle words, drills its holes and runs its
+  /// M S T functions after op 1 of the first hole (000:10360-10362).
+  bool drillBlock(const BlockWords& w, bool consumedAxes);
+  /// Cycle mode ends (G80, a group-1 code, reset): the variables go, G98 returns (000:9456).
+  void cancelCycleMode();
+  /// Executes cycle ops; the block's M S T run before ops[auxAt] (never if auxAt is npos).
+  /// `drillSlot` 3-5 when a parallel axis U V W drills: its value travels in the normal slot.
+  bool runCycleOps(const std::vector<cycles::CycleOp>& ops, std::size_t auxAt, const BlockWords& w,
+                   int drillSlot);
   /// End positions of A B C (rollover rules) and of U V W axes for the words of a block.
   motion::Extra extraTarget(const BlockWords& w) const;
   double rotaryDelta(double current, double value) const;
@@ -177,6 +197,8 @@ private:
   std::map<std::string, std::array<double, 3>> rotations_; // basic rotations per work system
   std::map<int, double> wear_;                             // G10 L11 length wear per register
   std::map<int, double> radiusWear_;                       // #13000+n radius wear per register
+  cycles::DrillModal drill_;
+  int lockedFrom_ = 0; // the group-15 code a tapping cycle's G63 replaced
   bool deferCycles_ = false;
   bool ended_ = false;
   bool dataMode_ = false;

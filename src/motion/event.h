@@ -45,6 +45,8 @@ enum class Kind {
   PlaneChange,    // G17/G18/G19: plane; text names its axes when parallel axes form it ("UV")
   UnitsChange,    // G20/G21 of the program (value 20 or 21); event values stay in mm
   FeedModeChange, // G94/G95 (value 94 or 95)
+  OverrideLock,   // value 1: feed and speed overrides fixed at 100 %, feed hold off (NCT G63,
+                  // a tapping cycle's NOOVR-ON); value 0: released again
 };
 
 struct Event {
@@ -64,7 +66,8 @@ struct Event {
   double endRadius = 0;       // Arc: |end - center|; differs from startRadius for spirals
 
   // feed and other values
-  double feed = 0;            // mm/min, or mm/rev when perRevolution
+  double feed = 0; // mm/min, or mm/rev when perRevolution
+  double lead = 0; // Feed: > 0 when spindle-synchronised (G33 thread, rigid tap): mm per rev
   bool perRevolution = false; // G95 feed, or G4 in revolutions
   double value = 0;      // Dwell time, Spindle speed (emitted whenever S or the direction changes),
                          // ToolChange tool, Coolant code, UnitsChange / FeedModeChange code

@@ -75,6 +75,7 @@ void StatsCollector::event(const Event& e) {
     ++stats_.toolChanges;
     break;
   case Kind::SpindleOrient:
+  case Kind::OverrideLock:
   case Kind::Coolant:
   case Kind::Stop:
   case Kind::End:

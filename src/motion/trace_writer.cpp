@@ -24,6 +24,8 @@ const char* kindName(Kind k) {
     return "spindle";
   case Kind::SpindleOrient:
     return "spindle_orient";
+  case Kind::OverrideLock:
+    return "override_lock";
   case Kind::ToolChange:
     return "tool_change";
   case Kind::Coolant:
@@ -156,6 +158,10 @@ std::string TraceWriter::line(const Event& e) {
     key(s, "feed");
     appendDecimal(s, e.feed);
     if (e.perRevolution) s += ",\"per_rev\":true";
+    if (e.lead > 0) {
+      key(s, "lead");
+      appendDecimal(s, e.lead);
+    }
     break;
   case Kind::Dwell:
     key(s, e.perRevolution ? "revolutions" : "seconds");
@@ -168,6 +174,7 @@ std::string TraceWriter::line(const Event& e) {
     s += e.direction > 0 ? "\"cw\"" : e.direction < 0 ? "\"ccw\"" : "\"stop\"";
     break;
   case Kind::SpindleOrient:
+  case Kind::OverrideLock:
     key(s, "value");
     appendDecimal(s, e.value);
     break;

@@ -53,7 +53,8 @@ bool zeroLength(const Event& e, double tol) {
 
 bool sameFeed(const Event& a, const Event& b, const CompareOptions& o) {
   if (!o.compareFeed) return true;
-  return a.perRevolution == b.perRevolution && std::abs(a.feed - b.feed) <= o.feedTolerance;
+  return a.perRevolution == b.perRevolution && std::abs(a.feed - b.feed) <= o.feedTolerance &&
+         std::abs(a.lead - b.lead) <= o.feedTolerance;
 }
 
 bool tryMerge(Item& it, const Event& e, const CompareOptions& o) {
@@ -181,6 +182,8 @@ std::string mismatch(const Event& a, const Event& b, const CompareOptions& o) {
                            b.perRevolution ? "per rev" : "per min");
       if (std::abs(a.feed - b.feed) > o.feedTolerance)
         return fmt::format("feeds differ: {} vs {}", a.feed, b.feed);
+      if (std::abs(a.lead - b.lead) > o.feedTolerance)
+        return fmt::format("spindle-synchronised leads differ: {} vs {} mm/rev", a.lead, b.lead);
     }
     return {};
   }
@@ -196,6 +199,7 @@ std::string mismatch(const Event& a, const Event& b, const CompareOptions& o) {
   case Kind::ToolChange:
   case Kind::Coolant:
   case Kind::SpindleOrient:
+  case Kind::OverrideLock:
     if (std::abs(a.value - b.value) > 1e-6) return "values differ";
     return {};
   case Kind::Stop:
@@ -233,6 +237,8 @@ const char* kindName(Kind k) {
     return "Spindle";
   case Kind::SpindleOrient:
     return "SpindleOrient";
+  case Kind::OverrideLock:
+    return "OverrideLock";
   case Kind::ToolChange:
     return "ToolChange";
   case Kind::Coolant:
@@ -280,6 +286,8 @@ std::string describe(const Event& e) {
                                          : "stop");
   case Kind::SpindleOrient:
     return fmt::format("SpindleOrient {}", e.value);
+  case Kind::OverrideLock:
+    return e.value != 0 ? "OverrideLock on" : "OverrideLock off";
   case Kind::ToolChange:
     return fmt::format("ToolChange T{}", e.value);
   case Kind::Coolant:

@@ -6,6 +6,7 @@
 #include "cycles/drill_harness.h"
 #include "diag/codes.h"
 #include "machine/setup.h"
+#include "passes/cycles/drilling.h"
 
 namespace gcx::test {
 namespace {
@@ -157,7 +158,7 @@ TEST(CyclesSpec_3_9, G84_3TurnsCCWIntoTheHoleAndOrientsWithTSC) {
 
 TEST(CyclesSpec_3_9, RetractOverrideOnlyWithEOE) { // 000:10012-10020, Q-24
   cycles::DrillRequest req = request(DrillCycle::G84_2);
-  req.vars.i = val(150);
+  req.vars.overridePercent = val(150); // I as written; updateModal stores it with the shift I
   req.vars.p = val(0.3);
   EXPECT_EQ(expand(req), "G0 Z2 | M24 | RTAP Z-7 F80 S1000 DIR=CW | G4 P0.3 | "
                          "RTAP Z2 F80 S1000 DIR=CCW | G0 Z10");
@@ -165,7 +166,7 @@ TEST(CyclesSpec_3_9, RetractOverrideOnlyWithEOE) { // 000:10012-10020, Q-24
   eoe.extractionEnabled = true;
   EXPECT_EQ(expand(req, eoe), "G0 Z2 | M24 | RTAP Z-7 F80 S1000 DIR=CW | G4 P0.3 | "
                               "RTAP Z2 F80 S1000 DIR=CCW OVR=150% | G0 Z10");
-  req.vars.i.reset();
+  req.vars.overridePercent.reset();
   eoe.tapExtraction = 120; // N1506
   EXPECT_EQ(expand(req, eoe), "G0 Z2 | M24 | RTAP Z-7 F80 S1000 DIR=CW | G4 P0.3 | "
                               "RTAP Z2 F80 S1000 DIR=CCW OVR=120% | G0 Z10");
@@ -284,8 +285,8 @@ TEST(CyclesSpec_3_1, WrongSpindleDirectionWarns) {
   const auto h = run("G17 G90 G0 Z30 S500 M4\n"
                      "G84 X1 Z-5 R2 F625\n"
                      "X2\n");
-  ASSERT_EQ(h.diags.warningCount(), 1u); // hole 1 leaves M3: the second hole is fine
-  EXPECT_EQ(h.diags.all()[0].code, diag::code::CycleSpindleDirection);
+  // hole 1 leaves M3: the second hole is fine
+  EXPECT_EQ(h.warnings, std::vector<std::string>{"2:1 CYC-SPINDLE-DIR"});
   EXPECT_EQ(h.out.at("#2"), "G0 X1 | G0 Z2 | G63 | G1 Z-5 F625 | M4 | G1 Z2 F625 | M3 | G64 | "
                             "G0 Z30");
 }

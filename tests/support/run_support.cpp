@@ -66,6 +66,8 @@ std::string describe(const motion::Event& e) {
     return "EV S" + n4(e.value) + (e.direction > 0 ? " M3" : e.direction < 0 ? " M4" : " M5");
   case motion::Kind::SpindleOrient:
     return "EV M19";
+  case motion::Kind::OverrideLock:
+    return e.value != 0 ? "EV G63" : "EV G64";
   case motion::Kind::ToolChange:
     return "EV T" + n4(e.value) + " M6";
   case motion::Kind::Coolant:
