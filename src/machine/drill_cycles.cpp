@@ -146,7 +146,8 @@ bool Interpreter::runCycleOps(const std::vector<cycles::CycleOp>& ops, std::size
     }
     case OpKind::ArcCW:
     case OpKind::ArcCCW:
-      return fail(diag::code::NotImplemented, blockRange_, "arcs in a cycle are not executed yet");
+      if (!arcTo(op.to, op.center, op.kind == OpKind::ArcCW, 1, extra_, op.feed)) return false;
+      break;
     case OpKind::Dwell:
       emitDwell(op.value);
       break;

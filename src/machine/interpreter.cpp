@@ -832,6 +832,20 @@ bool Interpreter::arc(const BlockWords& w, const Vec3& end, const motion::Extra&
                             emit::formatNumber(std::round(r0 * 1e4) / 1e4),
                             emit::formatNumber(radiusTolerance_)));
   if (state_.feed <= 0) return fail(diag::code::MissingData, at, "arc without a feed rate F");
+  Vec3 centre = start;
+  centre[ax.first] = c1;
+  centre[ax.second] = c2;
+  return arcTo(end, centre, cw, turns, extraEnd, state_.feed);
+}
+
+bool Interpreter::arcTo(const Vec3& end, const Vec3& centre, bool cw, int turns,
+                        const motion::Extra& extraEnd, double feed) {
+  const motion::PlaneAxes ax = motion::axesOf(state_.plane);
+  const SourceRange& at = blockRange_;
+  const double r0 =
+      std::hypot(program_[ax.first] - centre[ax.first], program_[ax.second] - centre[ax.second]);
+  const double r1 =
+      std::hypot(end[ax.first] - centre[ax.first], end[ax.second] - centre[ax.second]);
   // the transformed arc must stay a circle in its plane
   const Eigen::Matrix3d m = transforms_.matrix().linear();
   Eigen::Matrix2d a2;
@@ -848,9 +862,6 @@ bool Interpreter::arc(const BlockWords& w, const Vec3& end, const motion::Extra&
   const double k = std::sqrt(std::fabs(a2.determinant()));
   const bool mirrored = a2.determinant() < 0;
 
-  Vec3 centre = start;
-  centre[ax.first] = c1;
-  centre[ax.second] = c2;
   motion::Event e;
   e.kind = Kind::Arc;
   e.start = machine_;
@@ -863,7 +874,7 @@ bool Interpreter::arc(const BlockWords& w, const Vec3& end, const motion::Extra&
   e.turns = turns - 1;
   e.startRadius = r0 * k;
   e.endRadius = r1 * k;
-  e.feed = state_.feed;
+  e.feed = feed;
   e.perRevolution = state_.perRevolution;
   machine_ = e.end;
   extra_ = extraEnd;

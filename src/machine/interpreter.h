@@ -139,6 +139,9 @@ private:
   bool move(const BlockWords& w);
   bool arc(const BlockWords& w, const Vec3& target, const motion::Extra& extraEnd,
            bool haveInPlaneEnd);
+  /// The arc from the current position about `centre` (program coordinates) to `end`.
+  bool arcTo(const Vec3& end, const Vec3& centre, bool cw, int turns, const motion::Extra& extraEnd,
+             double feed);
   /// An axis word in mm, halved on a diameter axis.
   double coordinate(int axis, const ir::Word& w) const;
   bool afterMotion(const BlockWords& w);
