@@ -2,6 +2,7 @@
 
 #include "diag/diagnostic.h"
 #include "dialects/nct/arguments.h"
+#include "passes/cycles/pocket.h"
 
 namespace gcx::nct {
 
@@ -183,6 +184,7 @@ Profile build() {
     ArgumentResult r = bindArguments(b, vacant, runtime);
     if (!r.ok()) diags.error(r.code, r.offending->range, r.message);
   };
+  p.cycleMacros = {cycles::pocketCycleMacro()}; // G65 P9999 (cycles.md §5)
   p.index();
   return p;
 }

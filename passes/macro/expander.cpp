@@ -8,6 +8,7 @@
 #include "diag/codes.h"
 #include "dialects/nct/arguments.h"
 #include "emit/number.h"
+#include "passes/macro/cycle_macro.h"
 #include "passes/macro/word_values.h"
 
 namespace gcx::macro {
@@ -678,6 +679,11 @@ bool Expander::callMacro(Frame& f, const ir::Block& b, const ir::Word* p, const 
   }
   std::array<Value, 34> args;
   if (!bindCall(b, 65, p, args)) return false;
+  // a system cycle written as a macro (cycles.md §5): its checks come before the call
+  const std::int64_t number = p ? static_cast<std::int64_t>(p->number) : 0;
+  if (const CycleMacro* c = p ? machine_.profile().cycleMacro(number) : nullptr)
+    if (!checkCycleMacroCall(*c, {b, *p, args, *f.program}, machine_, library_, diags_))
+      return false;
   const LoadedProgram* callee =
       p ? library_.byNumber(static_cast<std::int64_t>(p->number), *f.program, p->range)
         : library_.byName(file->path, *f.program, file->range);

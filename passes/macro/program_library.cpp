@@ -70,21 +70,24 @@ const LoadedProgram* ProgramLibrary::load(const std::string& path) {
   return result;
 }
 
-const LoadedProgram* ProgramLibrary::findFile(const std::vector<std::string>& candidates,
-                                              const LoadedProgram& caller, const SourceRange& where,
-                                              const std::string& what) {
+std::vector<std::string> ProgramLibrary::searchFolders(const LoadedProgram& caller) const {
   // the caller's folder, then the library folders; system macros of configured calls live in
   // SystemMacros/Channel1 below them (nct-macro.md §5.1 S6)
-  std::vector<fs::path> dirs{fs::path(caller.path).parent_path()};
+  std::vector<std::string> dirs{fs::path(caller.path).parent_path().string()};
   for (const std::string& d : libraryDirs_)
-    dirs.emplace_back(d);
+    dirs.push_back(d);
   for (std::size_t i = 0, n = dirs.size(); i < n; ++i)
-    dirs.push_back(dirs[i] / "SystemMacros" / "Channel1");
-  for (const fs::path& dir : dirs) {
+    dirs.push_back((fs::path(dirs[i]) / "SystemMacros" / "Channel1").string());
+  return dirs;
+}
+
+std::string ProgramLibrary::locate(const std::vector<std::string>& candidates,
+                                   const LoadedProgram& caller) const {
+  for (const fs::path dir : searchFolders(caller)) {
     for (const std::string& name : candidates) {
       const fs::path direct = dir / name;
       std::error_code ec;
-      if (fs::is_regular_file(direct, ec)) return load(direct.string());
+      if (fs::is_regular_file(direct, ec)) return direct.string();
       // the controls' file systems ignore case: O0011.NCT finds o0011.nct
       const fs::path folder = (dir / name).parent_path();
       const std::string leaf = fs::path(name).filename().string();
@@ -96,23 +99,40 @@ const LoadedProgram* ProgramLibrary::findFile(const std::vector<std::string>& ca
               return std::tolower(static_cast<unsigned char>(a)) ==
                      std::tolower(static_cast<unsigned char>(b));
             }))
-          return load(entry.path().string());
+          return entry.path().string();
       }
     }
   }
+  return {};
+}
+
+const LoadedProgram* ProgramLibrary::findFile(const std::vector<std::string>& candidates,
+                                              const LoadedProgram& caller, const SourceRange& where,
+                                              const std::string& what) {
+  if (std::string path = locate(candidates, caller); !path.empty()) return load(path);
   diags_.error(diag::code::ProgramNotFound, where,
                fmt::format("program {} not found next to {} or in the library folders", what,
                            fs::path(caller.path).filename().string()));
   return nullptr;
 }
 
-const LoadedProgram* ProgramLibrary::byNumber(std::int64_t number, const LoadedProgram& caller,
-                                              const SourceRange& where) {
+std::vector<std::string> ProgramLibrary::numberNames(std::int64_t number,
+                                                     const LoadedProgram& caller) const {
   const std::string ext = fs::path(caller.path).extension().string();
   std::vector<std::string> names;
   if (number >= 0 && number <= 9999) names.push_back(fmt::format("O{:04}{}", number, ext));
   if (number >= 0 && number <= 99999999) names.push_back(fmt::format("O{:08}{}", number, ext));
-  return findFile(names, caller, where, fmt::format("O{:04}{}", number, ext));
+  return names;
+}
+
+std::string ProgramLibrary::locateByNumber(std::int64_t number, const LoadedProgram& caller) const {
+  return locate(numberNames(number, caller), caller);
+}
+
+const LoadedProgram* ProgramLibrary::byNumber(std::int64_t number, const LoadedProgram& caller,
+                                              const SourceRange& where) {
+  const std::string ext = fs::path(caller.path).extension().string();
+  return findFile(numberNames(number, caller), caller, where, fmt::format("O{:04}{}", number, ext));
 }
 
 const LoadedProgram* ProgramLibrary::byName(const std::string& name, const LoadedProgram& caller,

@@ -38,11 +38,17 @@ public:
   /// folder, then in the library folders. Null after reporting NCTX07 at `where`.
   const LoadedProgram* byNumber(std::int64_t number, const LoadedProgram& caller,
                                 const SourceRange& where);
+  /// The file `byNumber` would load, or empty; nothing is reported.
+  std::string locateByNumber(std::int64_t number, const LoadedProgram& caller) const;
+  /// The folders a call from `caller` searches, in order.
+  std::vector<std::string> searchFolders(const LoadedProgram& caller) const;
   /// `M98 <name>`: relative to the caller's folder (`\` separators, `..\`), then the library.
   const LoadedProgram* byName(const std::string& name, const LoadedProgram& caller,
                               const SourceRange& where);
 
 private:
+  std::vector<std::string> numberNames(std::int64_t number, const LoadedProgram& caller) const;
+  std::string locate(const std::vector<std::string>& candidates, const LoadedProgram& caller) const;
   const LoadedProgram* findFile(const std::vector<std::string>& candidates,
                                 const LoadedProgram& caller, const SourceRange& where,
                                 const std::string& what);

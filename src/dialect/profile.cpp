@@ -22,6 +22,12 @@ const AddressSpec* Profile::address(std::string_view a) const {
   return nullptr;
 }
 
+const CycleMacro* Profile::cycleMacro(std::int64_t program) const {
+  for (const CycleMacro& c : cycleMacros)
+    if (c.program == program) return &c;
+  return nullptr;
+}
+
 std::optional<int> gcodeTenths(double value) {
   const double t = value * 10.0;
   const double r = std::round(t);

@@ -2,6 +2,7 @@
 // groups, M-code rules. The core reads a Profile; it never asks which dialect it is running.
 #pragma once
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -12,7 +13,8 @@ namespace gcx {
 
 namespace ir {
 struct Block;
-}
+struct Word;
+} // namespace ir
 namespace diag {
 class Engine;
 }
@@ -99,6 +101,29 @@ struct GCodeSpec {
   int arg = 0;
 };
 
+/// A G65 call of a system cycle written as a macro program (NCT G65 P9999 pocket milling,
+/// cycles.md §5), as its argument check sees it.
+struct CycleMacroCall {
+  const ir::Block* block = nullptr;             // the call block as written: word locations
+  const ir::Word* callWord = nullptr;           // the G65 word
+  std::array<std::optional<double>, 34> args{}; // #1..#33 as bound; nullopt = vacant
+  int plane = 17;                               // 17, 18 or 19
+  bool inch = false;                            // G20: lengths in inches
+  /// Radius in tool register n (mm, geometry + wear), 0 when the register is not set.
+  std::function<double(int)> toolRadius;
+};
+
+/// A cycle the control implements as a macro program: the expander checks the call's
+/// arguments before the call and replaces "program not found" by `missingCode`.
+struct CycleMacro {
+  std::int64_t program = 0; // G65 P<program>
+  const char* name = "";    // "pocket-milling cycle"
+  const char* missingCode = "";
+  const char* spec = ""; // where the cycle is specified, for messages
+  /// Reports a located error and returns false when the arguments are wrong.
+  std::function<bool(const CycleMacroCall&, diag::Engine&)> check;
+};
+
 struct Profile {
   std::string name;
   std::vector<AddressSpec> addresses;
@@ -116,6 +141,9 @@ struct Profile {
   double arcRadiusTolerance = 0.01;     // |r_end - r_start| accepted (as a spiral) without alarm
   /// Static check of a macro call block's arguments (the dialect's argument specification).
   std::function<void(const ir::Block&, diag::Engine&)> checkCallArguments;
+  /// System cycles written as macro programs, by program number (NCT: 9999, cycles.md §5).
+  std::vector<CycleMacro> cycleMacros;
+  const CycleMacro* cycleMacro(std::int64_t program) const;
 
   const AddressSpec* address(std::string_view a) const;
   /// Builds the lookup tables; call once after filling the vectors.

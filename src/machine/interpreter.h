@@ -89,6 +89,7 @@ public:
     if (group > 0 && group < static_cast<int>(modalCodes_.size())) modalCodes_[group] = code10;
   }
   const Setup& setup() const { return setup_; }
+  const Profile& profile() const { return profile_; }
   /// Active length offset along Z (signed, mm) and the G92 / G52 shifts.
   double lengthOffset() const { return offsets_.length; }
   const Vec3& g92Shift() const { return offsets_.g92; }

@@ -154,7 +154,7 @@ namespace gcx::test {
 
 MacroRun runMacro(const std::map<std::string, std::string>& files, const std::string& main,
                   const std::vector<int>& watch, const machine::Setup& setup,
-                  std::uint64_t maxJumps) {
+                  std::uint64_t maxJumps, const std::vector<std::string>& libraryDirs) {
   static int counter = 0;
   const fs::path dir =
       fs::temp_directory_path() / fmt::format("gcx-macro-{}-{}", ::getpid(), ++counter);
@@ -166,7 +166,10 @@ MacroRun runMacro(const std::map<std::string, std::string>& files, const std::st
   MacroRun run;
   SourceManager sm;
   diag::Engine diags(100);
-  macro::ProgramLibrary library(*findDialect("nct"), sm, diags);
+  std::vector<std::string> libs;
+  for (const std::string& d : libraryDirs)
+    libs.push_back((dir / d).string());
+  macro::ProgramLibrary library(*findDialect("nct"), sm, diags, libs);
   std::vector<motion::Event>& events = run.events;
   Collect sink(events, nullptr);
   std::ostringstream printed;

@@ -39,12 +39,14 @@ namespace gcx::test {
 
 /// A macro program run through the expansion pass: files (name -> text) are written to a fresh
 /// temporary folder; `main` is run; the values of the `watch` variables are read at the end.
+/// `libraryDirs` (`--lib`) are folders of that temporary folder.
 struct MacroRun : ProgramRun {
   std::map<int, macro::Value> vars;
   std::string printed; // DPRNT output
 };
 MacroRun runMacro(const std::map<std::string, std::string>& files, const std::string& main,
                   const std::vector<int>& watch = {}, const machine::Setup& setup = {},
-                  std::uint64_t maxJumps = 100000);
+                  std::uint64_t maxJumps = 100000,
+                  const std::vector<std::string>& libraryDirs = {});
 
 } // namespace gcx::test
