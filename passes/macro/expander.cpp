@@ -86,6 +86,8 @@ bool Expander::run(const LoadedProgram& main) {
     system_.setMainProgramNumber(std::stoi(stem.substr(1)));
   locals_.assign(1, {});
   done_ = false;
+  machine_.setContourSource(
+      [this](std::int64_t ns, std::int64_t nf, auto& out) { return contour(ns, nf, out); });
   while (!done_)
     if (!step()) {
       // errors reported below the pass (evaluator, machine) get the call chain as notes too
@@ -348,9 +350,28 @@ bool Expander::print(const ir::Stmt& s) {
 
 // ---------------------------------------------------------------- NC blocks and calls
 
-bool Expander::ncBlock(Frame& f, const ir::Block& b) {
+bool Expander::contour(std::int64_t ns, std::int64_t nf, std::vector<machine::ContourBlock>& out) {
+  const Frame& f = stack_.back();
+  const LoadedProgram& program = *f.program;
+  const std::size_t first = program.find(ns, f.pc);
+  const std::size_t last = first == LoadedProgram::npos ? first : program.find(nf, first);
+  if (first == LoadedProgram::npos || last == LoadedProgram::npos || last < first) return false;
+  for (std::size_t i = first; i <= last; ++i) {
+    const ir::Block& b = program.blocks[i];
+    machine::ContourBlock c;
+    c.from = provenance(b);
+    if (b.stmt)
+      c.block = b; // the interpreter reports it
+    else if (!flatten(b, c.block))
+      return false;
+    out.push_back(std::move(c));
+  }
+  return true;
+}
+
+bool Expander::flatten(const ir::Block& b, ir::Block& flat) {
   // resolve every value; vacant bare references drop their word (§2.5 rule 4)
-  ir::Block flat = b;
+  flat = b;
   flat.words.clear();
   bool call = false;
   for (const ir::Word& w : b.words)
@@ -387,7 +408,12 @@ bool Expander::ncBlock(Frame& f, const ir::Block& b) {
     resolved.expr = ir::Expr{};
     flat.words.push_back(std::move(resolved));
   }
+  return true;
+}
 
+bool Expander::ncBlock(Frame& f, const ir::Block& b) {
+  ir::Block flat;
+  if (!flatten(b, flat)) return false;
   if (!insideConfiguredCall()) { // inside one, configured codes are ordinary (§5.8 P3, P4)
     const std::size_t before = diags_.errorCount();
     if (auto c = configuredCall(flat)) return runConfiguredCall(f, b, flat, *c);
@@ -459,6 +485,14 @@ bool Expander::ncBlock(Frame& f, const ir::Block& b) {
       return true;
     }
     return false;
+  }
+  // G71.7-G73.7 whose contour follows: continue after its last block (cycles.md §4.7)
+  if (const auto nf = machine_.takeResumeAfter()) {
+    const std::size_t last = f.program->find(*nf, f.pc);
+    if (last != LoadedProgram::npos && last > f.pc) {
+      f.pc = last + 1;
+      return true;
+    }
   }
   // G66: after each motion block, the most recent visible modal call (§5.5 D2, D3)
   if (const ModalCall* m = visibleModalCall(); m && !m->everyBlock && movesAxes(flat)) {
@@ -835,8 +869,10 @@ bool mayNeedExpansion(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::string chunk(1 << 16, '\0');
   std::string carry;
-  static const char* const markers[] = {"M98", "M99", "G65", "G66",   "GOTO",  "WHILE",
-                                        "DO",  "END", "IF",  "DPRNT", "BPRNT", "POPEN"};
+  // G70.7-G73.7 read their contour blocks by N number, as jumps do
+  static const char* const markers[] = {"M98",   "M99",   "G65",   "G66",   "GOTO",  "WHILE",
+                                        "DO",    "END",   "IF",    "DPRNT", "BPRNT", "POPEN",
+                                        "G70.7", "G71.7", "G72.7", "G73.7"};
   while (in) {
     in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
     std::string text = carry + chunk.substr(0, static_cast<std::size_t>(in.gcount()));

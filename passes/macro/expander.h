@@ -93,6 +93,10 @@ private:
   bool jumpTo(Frame& f, const ir::Expr& label, const SourceRange& where);
   bool loopBack(Frame& f, std::size_t head, const SourceRange& where);
   bool ncBlock(Frame& f, const ir::Block& b);
+  /// Every word of b resolved to a literal (or dropped when vacant); false after reporting.
+  bool flatten(const ir::Block& b, ir::Block& flat);
+  /// The interpreter's ContourSource: blocks ns..nf of the running program, flat.
+  bool contour(std::int64_t ns, std::int64_t nf, std::vector<machine::ContourBlock>& out);
   bool callSubprogram(Frame& f, const ir::Block& b, const ir::Word* p, const ir::Word* file,
                       std::int64_t times);
   bool callMacro(Frame& f, const ir::Block& b, const ir::Word* p, const ir::Word* file,

@@ -102,5 +102,8 @@ inline constexpr const char* CycleRadiusComp = "CYC-RADCOMP";           // warni
 inline constexpr const char* PocketMacroError1 = "4001"; // MACRO ERROR 1: data not given
 inline constexpr const char* PocketMacroError2 = "4002"; // MACRO ERROR 2: sizes
 inline constexpr const char* PocketMacroMissing = "CYC-POCKET-MACRO-MISSING"; // no O9999
+// turning contours ns..nf (cycles.md §4.7, §7), found and checked by the interpreter
+inline constexpr const char* CyclePQNotFound = "CYC-PQ-NOTFOUND"; // P/Q missing or N not found
+inline constexpr const char* CycleContourCommand = "CYC-CONTOUR-CMD"; // forbidden in ns..nf
 
 } // namespace gcx::diag::code

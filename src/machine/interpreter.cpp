@@ -22,7 +22,7 @@ std::string gName(const ir::Word& w) {
 
 Interpreter::Interpreter(const Profile& profile, const Setup& setup, motion::Sink& sink,
                          diag::Engine& diags)
-    : profile_(profile), setup_(setup), sink_(sink), diags_(diags) {
+    : profile_(profile), setup_(setup), sink_(&sink), diags_(diags) {
   radiusTolerance_ = setup_.parameter("N1339", profile_.arcRadiusTolerance);
   const auto& p = setup_.initialPosition;
   machine_ = Vec3(p[0], p[1], p[2]);
@@ -131,7 +131,7 @@ void Interpreter::reexpress() {
 
 void Interpreter::emit(motion::Event e) {
   e.from = from_;
-  sink_.event(e);
+  sink_->event(e);
 }
 
 void Interpreter::emitLine(Kind kind, const Vec3& to, const motion::Extra& extraTo, double feed,
@@ -185,6 +185,7 @@ bool Interpreter::execute(const ir::Block& block, const motion::Provenance& from
   for (const ir::Word* o : w.other)
     if (o->is('O')) state_.lastO = static_cast<int>(o->number);
   const ModalState before = state_;
+  pendingTurning_ = 0;
   if (!applyModal(w)) return false;
   if (w.hasAxisWord() && !w.has(GAction::DataInput)) {
     const std::string key = state_.workOffset > 100
@@ -202,6 +203,7 @@ bool Interpreter::execute(const ir::Block& block, const motion::Provenance& from
   bool consumed = false;
   if (!applyNonMotion(w, consumed)) return false;
   if (state_.cycle == GAction::DrillCycle && !deferCycles_) return drillBlock(w, consumed);
+  if (pendingTurning_) return turningBlock(w);
   const bool arcWithCentreOnly =
       (state_.motion == GAction::ArcCW || state_.motion == GAction::ArcCCW) &&
       (w.ijk[0] || w.ijk[1] || w.ijk[2]);
@@ -335,6 +337,10 @@ bool Interpreter::applyModal(const BlockWords& w) {
       break;
     case GAction::TurningCycle:
       if (deferCycles_) break;
+      if (g->group == 0) { // one-shot: turningBlock() runs it
+        pendingTurning_ = g->code10;
+        break;
+      }
       [[fallthrough]];
     default:
       return fail(diag::code::NotImplemented, word.range,

@@ -5,6 +5,8 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <utility>
 #include <map>
 #include <optional>
 #include <string>
@@ -59,6 +61,16 @@ struct Rollover {
   double amount = 360;
 };
 
+/// A block of a turning contour (cycles.md §4.7) as the driver holding the program hands it
+/// over: flat (all values literal) unless it is a macro statement, with its provenance.
+struct ContourBlock {
+  ir::Block block;
+  motion::Provenance from;
+};
+/// Fills `out` with the blocks ns..nf of the current program; false when one is not found.
+using ContourSource =
+    std::function<bool(std::int64_t ns, std::int64_t nf, std::vector<ContourBlock>& out)>;
+
 class Interpreter {
 public:
   Interpreter(const Profile& profile, const Setup& setup, motion::Sink& sink, diag::Engine& diags);
@@ -70,6 +82,11 @@ public:
   /// For `--to nct` without cycle expansion: canned-cycle blocks pass through unexecuted; the
   /// programmed position follows the hole positions in the plane (not the drilling axis).
   void setDeferCycles(bool on) { deferCycles_ = on; }
+  /// Where G70.7-G73.7 find their contour blocks; without one they are an error.
+  void setContourSource(ContourSource source) { contours_ = std::move(source); }
+  /// After G71.7-G73.7: the N of the last contour block. When the contour follows the cycle
+  /// block, the driver resumes after it; the contour is not run again (cycles.md §4.7).
+  std::optional<std::int64_t> takeResumeAfter() { return std::exchange(resumeAfter_, {}); }
   /// An operator message (#3006, #3106, DPRNT...); with stop, a program stop follows it.
   void message(const std::string& text, const motion::Provenance& from, bool stop);
 
@@ -165,6 +182,21 @@ private:
   void emitDwell(double p);
   void emitSpindle();
 
+  // --- turning cycles (turning_cycles.cpp, cycles.md §4) ------------------------------------
+  /// A block with a one-shot turning cycle G70.7-G76.7 (pendingTurning_).
+  bool turningBlock(const BlockWords& w);
+  /// G70.7: the contour blocks run as ordinary blocks, then a rapid back (§4.11).
+  bool finishingCycle(const BlockWords& w);
+  /// The blocks ns..nf named by the block's P and Q, checked against §4.7; false if reported.
+  bool contourBlocks(const BlockWords& w, std::vector<ContourBlock>& out);
+  /// The contour's moves as a scratch copy of this interpreter makes them, in program
+  /// coordinates; G40-G42 are left out (roughing ignores them, Q-14).
+  bool traceContour(const std::vector<ContourBlock>& blocks, std::vector<cycles::CycleOp>& out,
+                    std::vector<SourceRange>& ranges);
+  Vec3 toProgram(const Vec3& machine) const {
+    return transforms_.applyInverse(machine - workOrigin());
+  }
+
   // --- drilling cycles (drill_cycles.cpp, cycles.md §2-§3) -------------------------------
   /// A block executed in cycle mode: stores its cycle words, drills its holes and runs its
   /// M S T functions after op 1 of the first hole (000:10360-10362).
@@ -184,7 +216,7 @@ private:
 
   const Profile& profile_;
   Setup setup_;
-  motion::Sink& sink_;
+  motion::Sink* sink_;
   diag::Engine& diags_;
   ModalState state_;
   Offsets offsets_;
@@ -202,6 +234,9 @@ private:
   std::map<int, double> wear_;                             // G10 L11 length wear per register
   std::map<int, double> radiusWear_;                       // #13000+n radius wear per register
   cycles::DrillModal drill_;
+  ContourSource contours_;
+  std::optional<std::int64_t> resumeAfter_;
+  int pendingTurning_ = 0; // code10 of a one-shot turning cycle in the current block
   int lockedFrom_ = 0; // the group-15 code a tapping cycle's G63 replaced
   bool deferCycles_ = false;
   bool ended_ = false;
