@@ -27,6 +27,7 @@ struct ExpandOptions {
   CommonOptions common;
   std::string to;
   std::string expand = "macros,subprograms"; // --to nct: what to flatten
+  std::string keep;                          // --keep cycles: structure the target keeps
   std::string output;                        // empty: standard output
   std::string setup;
   bool provenance = false;

@@ -63,6 +63,12 @@ int runExpand(const std::string& file, const ExpandOptions& opt) {
     reportUsage("--to " + opt.to + " is not implemented yet; --to canonical and --to nct are");
     return UsageError;
   }
+  if (!opt.keep.empty() && (opt.keep != "cycles" || opt.to != "nct")) {
+    reportUsage(opt.keep != "cycles" ? "--keep takes cycles"
+                                     : "--keep cycles needs a target with canned cycles (--to "
+                                       "nct); canonical motion has none");
+    return UsageError;
+  }
   Session s(opt.common);
   machine::Setup setup;
   if (int rc = openWithSetup(s, file, opt.setup, setup)) return rc;

@@ -62,6 +62,9 @@ int main(int argc, char** argv) {
   expand->add_flag("--provenance", expandOpt.provenance, "a source comment on each line");
   expand->add_option("--expand", expandOpt.expand,
                      "with --to nct: what to flatten (macros,subprograms; cycles stay cycles)");
+  expand->add_option("--keep", expandOpt.keep,
+                     "structure to keep where the target expresses it: cycles (--to nct; the "
+                     "default there). --to canonical expands every cycle");
   addCommon(expand);
   addExecution(expand);
 

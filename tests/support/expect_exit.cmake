@@ -1,5 +1,5 @@
-# Runs `GCX CMD FILE` and checks the exit code and a piece of standard error.
-execute_process(COMMAND ${GCX} ${CMD} ${FILE} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+# Runs `GCX CMD FILE [ARGS]` and checks the exit code and a piece of standard error.
+execute_process(COMMAND ${GCX} ${CMD} ${FILE} ${ARGS} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL EXPECT_EXIT)
   message(FATAL_ERROR "exit code ${rc}, expected ${EXPECT_EXIT}\nstdout: ${out}\nstderr: ${err}")
 endif()
