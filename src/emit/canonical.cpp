@@ -32,14 +32,17 @@ void CanonicalEmitter::line(std::string text, const motion::Event& e) {
     headerDone_ = true;
   }
   const SourceLoc& at = e.from.at;
-  if (opt_.provenance && at.valid() &&
-      (at.line != lastSource_.line || at.file != lastSource_.file)) {
-    std::string where = opt_.fileName ? opt_.fileName(at.file) : std::string("line");
-    text += fmt::format(" ({}:{}", where, at.line);
+  if (opt_.provenance && at.valid()) {
+    // a new source line, or the same one in another call, loop iteration, hole or pass
+    std::string chain;
     for (auto it = e.from.chain.rbegin(); it != e.from.chain.rend(); ++it)
-      text += fmt::format(", in {}", it->what);
-    text += ')';
-    lastSource_ = at;
+      chain += fmt::format(", in {}", it->what);
+    if (at.line != lastSource_.line || at.file != lastSource_.file || chain != lastChain_) {
+      std::string where = opt_.fileName ? opt_.fileName(at.file) : std::string("line");
+      text += fmt::format(" ({}:{}{})", where, at.line, chain);
+      lastSource_ = at;
+      lastChain_ = std::move(chain);
+    }
   }
   out_ << text << '\n';
 }

@@ -42,6 +42,7 @@ private:
   bool parallelWords_ = false; // U V W likewise
   double spindleSpeed_ = 0;
   SourceLoc lastSource_;
+  std::string lastChain_;
 };
 
 } // namespace gcx::emit

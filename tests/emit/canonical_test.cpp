@@ -2,6 +2,7 @@
 // and a round trip through rs274 (skipped when it is not installed).
 #include "emit/canonical.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <sstream>
 
@@ -176,6 +177,36 @@ TEST(Canonical, ProvenanceCommentNamesTheCallChain) {
                            "in O0020 (M98 P20))\n"),
             std::string::npos)
       << out.str();
+}
+
+} // namespace
+} // namespace gcx::emit
+
+namespace gcx::emit {
+namespace {
+
+// The same source line in another hole of an L-repeated cycle gets its own comment.
+TEST(Canonical, ProvenanceCommentOnEveryNewFrameOfTheSameLine) {
+  std::ostringstream out;
+  CanonicalOptions opt;
+  opt.provenance = true;
+  opt.fileName = [](FileId) { return std::string("O0001.nct"); };
+  CanonicalEmitter emitter(out, opt);
+  for (int hole = 1; hole <= 2; ++hole)
+    for (double z : {3.0, -37.0}) {
+      motion::Event e;
+      e.kind = motion::Kind::Rapid;
+      e.end = motion::Vec3(100 * hole, 0, z);
+      e.from.at = SourceLoc{0, 2, 1, 0};
+      e.from.chain = {{SourceLoc{0, 2, 1, 0}, fmt::format("G81 hole {}", hole)}};
+      emitter.event(e);
+    }
+  const std::string s = out.str();
+  EXPECT_EQ(s.substr(s.find('\n', s.find('\n') + 1) + 1),
+            "G0 X100 Y0 Z3 (O0001.nct:2, in G81 hole 1)\n"
+            "G0 X100 Y0 Z-37\n"
+            "G0 X200 Y0 Z3 (O0001.nct:2, in G81 hole 2)\n"
+            "G0 X200 Y0 Z-37\n");
 }
 
 } // namespace
