@@ -3,17 +3,30 @@
 //   holes   a G83 drilling cycle repeated at about LINES positions
 //   macro   an NCT WHILE loop that emits LINES G1 blocks (the macro expansion pass)
 //   oword   the same loop for LinuxCNC (o100 while ... o100 endwhile), for rs274
+//   g83     LINES holes of one G83 peck cycle (Q5, E0.254 so the clearance equals LinuxCNC's
+//           fixed 0.254 mm), starting above R (G98 to the initial level Z10)
+//   g83ngc  the same holes for LinuxCNC: identical text without the E word, which rs274 rejects
+//           (tests/differential/programs/42_cycle_g83_e shows the two move alike)
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 
 int main(int argc, char** argv) {
   if (argc != 3) {
-    std::fprintf(stderr, "usage: gcx-bench-gen lines|holes|macro|oword LINES\n");
+    std::fprintf(stderr, "usage: gcx-bench-gen lines|holes|macro|oword|g83|g83ngc LINES\n");
     return 2;
   }
   const std::string kind = argv[1];
   const long n = std::atol(argv[2]);
+  if (kind == "g83" || kind == "g83ngc") {
+    // 5 pecks per hole (R2 to Z-20 by Q5), a 1000 x n/1000 grid of 0.5 mm pitch
+    std::printf("(BENCHMARK %s %ld)\nG21 G90 G17 G94 G54\nG0 X0 Y0 Z10\nF200\n", kind.c_str(), n);
+    std::printf("G98 G83 X0 Y0 Z-20 R2 Q5%s\n", kind == "g83" ? " E0.254" : "");
+    for (long i = 1; i < n; ++i)
+      std::printf("X%.1f Y%.1f\n", (i % 1000) * 0.5, (i / 1000) * 0.5);
+    std::printf("G80\nM30\n");
+    return 0;
+  }
   std::printf("(BENCHMARK %s %ld)\nG21 G90 G17 G54 G0 X0 Y0 Z5\nG1 Z-1 F600\n", kind.c_str(), n);
   if (kind == "lines") {
     // a zig-zag of lines with a half circle every 4th block; stays within +-100 mm

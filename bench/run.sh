@@ -4,7 +4,10 @@
 # The macro section runs a WHILE loop of LINES iterations (one G1 block each) through gcx's
 # macro expansion pass, and the equivalent o-word loop through rs274; there lines/s counts the
 # blocks emitted, not the source lines.
-#   usage: bench/run.sh BUILD_DIR [LINES]
+# The drilling section expands a G83 peck cycle at HOLES (default 100000) positions to canonical
+# G0/G1 (lines/s counts source blocks, and separately canonical lines emitted), and runs the
+# equivalent RS274 program (without NCT's E word) through rs274.
+#   usage: bench/run.sh BUILD_DIR [LINES]      (environment: HOLES=100000)
 set -euo pipefail
 build=${1:-build}
 lines=${2:-1000000}
@@ -12,6 +15,13 @@ gcx=$build/gcx
 gen=$build/bench/gcx-bench-gen
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+
+rs274_measure() {  # rs274_measure LABEL N PROGRAM CANON: rs274 with a private HOME and var file
+  mkdir -p "$work/home"
+  : > "$work/$(basename "$3").var"  # rs274 writes both
+  measure "$1" "$2" env HOME="$work/home" \
+    rs274 -g -v "$work/$(basename "$3").var" "$3" "$4" < /dev/null
+}
 
 measure() {  # measure LABEL LINES COMMAND... -> prints lines/s and peak RSS
   local label=$1 n=$2
@@ -40,10 +50,7 @@ measure "gcx run --stats ($lines lines)" "$lines" "$gcx" run "$work/lines.nct" -
 
 if command -v rs274 > /dev/null; then
   echo "== LinuxCNC rs274 on the same program (output-file argument, its fastest mode)"
-  mkdir -p "$work/home"
-  : > "$work/p.var"  # a private HOME and parameter file: rs274 writes both
-  measure "rs274 ($lines lines)" "$lines" env HOME="$work/home" \
-    rs274 -g -v "$work/p.var" "$work/lines.ngc" "$work/out.canon" < /dev/null
+  rs274_measure "rs274 ($lines lines)" "$lines" "$work/lines.ngc" "$work/out.canon"
   rs_secs=$(cat "$work/last")
   awk -v g="$gcx_secs" -v r="$rs_secs" 'BEGIN { printf "ratio: gcx expand is %.1fx the speed of rs274\n", (g > 0 ? r / g : 0) }'
 else
@@ -67,10 +74,7 @@ measure "gcx run --stats (macro, $lines blocks)" "$lines" \
 if command -v rs274 > /dev/null; then
   echo "== LinuxCNC rs274 on the same loop written with o-words"
   "$gen" oword "$lines" > "$work/oword.ngc"
-  mkdir -p "$work/home"
-  : > "$work/oword.var"
-  measure "rs274 (o-word loop, $lines blocks)" "$lines" env HOME="$work/home" \
-    rs274 -g -v "$work/oword.var" "$work/oword.ngc" "$work/oword.canon" < /dev/null
+  rs274_measure "rs274 (o-word loop, $lines blocks)" "$lines" "$work/oword.ngc" "$work/oword.canon"
   rs_macro_secs=$(cat "$work/last")
   feeds=$(grep -c 'STRAIGHT_FEED' "$work/oword.canon" || true)
   if [ "$feeds" -ne $((lines + 1)) ]; then
@@ -79,4 +83,30 @@ if command -v rs274 > /dev/null; then
   awk -v g="$macro_secs" -v r="$rs_macro_secs" 'BEGIN { printf "ratio: gcx expand (macro loop) is %.1fx the speed of rs274 (o-word loop)\n", (g > 0 ? r / g : 0) }'
 else
   echo "rs274 not installed: no macro ratio"
+fi
+
+echo "== drilling cycles: G83 at ${HOLES:=100000} holes (Q5, 5 pecks each, E0.254 = rs274's 0.254 mm)"
+"$gen" g83 "$HOLES" > "$work/g83.nct"
+"$gen" g83ngc "$HOLES" > "$work/g83.ngc"
+blocks=$(wc -l < "$work/g83.nct")
+measure "gcx expand --to canonical (G83 $HOLES holes)" "$blocks" \
+  "$gcx" expand "$work/g83.nct" --to canonical -o "$work/g83.out.ngc"
+g83_secs=$(cat "$work/last")
+emitted=$(wc -l < "$work/g83.out.ngc")
+gfeeds=$(grep -c '^G1 ' "$work/g83.out.ngc" || true)
+awk -v n="$emitted" -v s="$g83_secs" \
+  'BEGIN { printf "%-50s %9s   %12.0f lines/s (%d canonical lines)\n", "  emitted canonical lines", "", (s > 0 ? n / s : 0), n }'
+if [ "$gfeeds" -ne $((HOLES * 5)) ]; then
+  echo "gcx expand wrote $gfeeds G1 blocks, expected $((HOLES * 5))"; exit 1
+fi
+if command -v rs274 > /dev/null; then
+  rs274_measure "rs274 (G83 $HOLES holes)" "$blocks" "$work/g83.ngc" "$work/g83.canon"
+  rs_g83_secs=$(cat "$work/last")
+  rfeeds=$(grep -c 'STRAIGHT_FEED' "$work/g83.canon" || true)
+  if [ "$rfeeds" -ne "$gfeeds" ]; then
+    echo "rs274 wrote $rfeeds feed moves, gcx $gfeeds"; exit 1
+  fi
+  awk -v g="$g83_secs" -v r="$rs_g83_secs" 'BEGIN { printf "ratio: gcx expand (G83) is %.1fx the speed of rs274\n", (g > 0 ? r / g : 0) }'
+else
+  echo "rs274 not installed: no G83 ratio"
 fi
