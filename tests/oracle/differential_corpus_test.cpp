@@ -62,8 +62,9 @@ Loaded load(const std::string& name) {
     applySetup(s, l.options);
   }
   const fs::path ref = corpusDir() / (name + ".ref.ngc");
-  if (l.text.find("G68") != std::string::npos)
+  if (l.text.find("G68") != std::string::npos) {
     EXPECT_TRUE(fs::exists(ref)) << "G68 program without " << ref;
+  }
   if (fs::exists(ref)) {
     const std::string refText = test::readFile(ref);
     EXPECT_EQ(countLines(refText), countLines(l.text)) << ref << " must match line by line";
