@@ -339,6 +339,19 @@ bool resolve(const DrillRequest& req, const SourceRange& where, const DrillConfi
   h.r = v.r->incremental ? req.initial + v.r->value : v.r->value; // 000:9574-9580
   h.z = v.z->incremental ? h.r + v.z->value : v.z->value;         // 000:9563-9567
   h.s = h.z > h.r ? +1 : -1;
+  // The rapid to R must not pass the bottom; back boring is the one cycle whose R lies beyond
+  // it (000:10246-10248). The manual gives no alarm: rs274 refuses the same ("R less than Z").
+  const bool backBoring = req.cycle == DrillCycle::G87 && cfg.orient;
+  const bool rBeyondBottom = (h.z - h.ini) * (h.r - h.z) > 0;
+  if (rBeyondBottom != backBoring) {
+    diags.error(diag::code::CycleRBeyondBottom, wordRange(v.r, where),
+                backBoring ? "G87 back boring needs its R point beyond the bottom, seen from the "
+                             "initial level (000:10246-10248)"
+                           : fmt::format("{}: the R point lies beyond the bottom; the rapid to R "
+                                         "would pass through the hole bottom",
+                                         name));
+    return false;
+  }
   h.feed = req.feed;
   h.dwell = v.p ? v.p->value : 0;
   h.scale = req.drillScale != 0 ? std::abs(req.drillScale) : 1;

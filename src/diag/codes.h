@@ -97,13 +97,14 @@ inline constexpr const char* CycleQNegative = "CYC-Q-NEGATIVE";
 inline constexpr const char* CycleLRange = "CYC-L-RANGE";
 inline constexpr const char* CycleCylindrical = "CYC-CYLINDRICAL";      // in G7.1 (no number given)
 inline constexpr const char* CycleSpindleDirection = "CYC-SPINDLE-DIR"; // warning
-inline constexpr const char* CycleRadiusComp = "CYC-RADCOMP";           // warning (§9 Q-20)
+inline constexpr const char* CycleRBeyondBottom = "CYC-R-BEYOND-BOTTOM"; // rapid to R passes Z
+inline constexpr const char* CycleRadiusComp = "CYC-RADCOMP";            // warning (§9 Q-20)
 // pocket-milling macro cycle G65 P9999 (§5): MACRO ERROR n as the #3000=n alarm 4000+n [D]
 inline constexpr const char* PocketMacroError1 = "4001"; // MACRO ERROR 1: data not given
 inline constexpr const char* PocketMacroError2 = "4002"; // MACRO ERROR 2: sizes
 inline constexpr const char* PocketMacroMissing = "CYC-POCKET-MACRO-MISSING"; // no O9999
 // turning contours ns..nf (cycles.md §4.7, §7), found and checked by the interpreter
-inline constexpr const char* CyclePQNotFound = "CYC-PQ-NOTFOUND"; // P/Q missing or N not found
+inline constexpr const char* CyclePQNotFound = "CYC-PQ-NOTFOUND";     // P/Q missing or N not found
 inline constexpr const char* CycleContourCommand = "CYC-CONTOUR-CMD"; // forbidden in ns..nf
 
 } // namespace gcx::diag::code

@@ -242,6 +242,17 @@ TEST(CyclesSpec_7, ZeroFeedIsMissingData) {
   EXPECT_EQ(failing("G17 G90 G0 Z10\nG81 X1 Z-5 R2\n"), "#2 2004 2:1");
 }
 
+// Not in §7: an R point beyond the bottom makes the rapid to R cut through the hole.
+TEST(CyclesSpec_7, RBeyondTheBottomIsRefusedAtTheRWord) {
+  EXPECT_EQ(failing("G17 G90 G0 Z10\nG81 X1 Z-5 R-8 F100\n"), "#2 CYC-R-BEYOND-BOTTOM 2:12");
+  EXPECT_EQ(failing("G17 G91 G0 Z10\nG81 X1 Z3 R-8 F100\n"), "#2 CYC-R-BEYOND-BOTTOM 2:11");
+}
+
+TEST(CyclesSpec_7, BackBoringNeedsRBeyondTheBottom) { // 000:10246-10248
+  EXPECT_EQ(failing("G17 G90 G0 Z50 S700 M3\nG87 X10 Z-5 R2 I-0.5 F40\n"),
+            "#2 CYC-R-BEYOND-BOTTOM 2:13");
+}
+
 TEST(CyclesSpec_7, RetractOverrideMustBePositive) {
   EXPECT_EQ(failing("G17 G90 G0 Z10\nG85 X1 Z-5 R2 I0 F100\n"), "#2 2002 2:15");
 }
