@@ -174,6 +174,14 @@ TEST(CyclesSpec_7, DegenerateContours) {
   EXPECT_EQ(expand(req, "G71.7 U2 R1", "G71.7 P50 Q70 F0.2"), "50:1 CYC-CONTOUR-DEGENERATE");
 }
 
+TEST(CyclesSpec_7, ZeroRadiusArcIsAnError) {
+  auto req = request(60, 2);
+  req.feed = 0.2;
+  req.contour = contour(req.start, {"G0 X30", "G1 Z-10", "G2 X40 Z-15 R5", "G1 X60"});
+  req.contour[2].center = req.contour[2].from;
+  EXPECT_EQ(expand(req, "G71.7 U2 R1", "G71.7 P50 Q80 F0.2"), "52:1 GCX037");
+}
+
 TEST(CyclesSpec_7, ParametersAreCheckedAtTheirWord) {
   auto req = request(60, 2);
   req.feed = 0.2;
@@ -288,6 +296,22 @@ TEST(CyclesSpec_4_8, DepthLargerThanTheStock) {
   EXPECT_EQ(
       contourCycle(60, 2, 0.3, {"G0 X50", "G1 Z-10", "X60"}, "G71.7 U8 R1", "G71.7 P50 Q70 F0.3"),
       "G0 X50 | G1 Z-10 F0.3 | G1 X60 F0.3 | G0 Z2");
+}
+
+// §4.8 with e >= Δd: each approach climbs from x_(k-1) + e; well defined, no overlap check.
+TEST(CyclesSpec_4_8, RetractLargerThanTheDepth) {
+  EXPECT_EQ(
+      contourCycle(60, 2, 0.2, {"G0 X50", "G1 Z-10", "X60"}, "G71.7 U1 R2", "G71.7 P50 Q70 F0.2"),
+      "G0 X58 | G1 Z-10 F0.2 | G0 X62 Z-8 | G0 Z2 | G0 X56 | G1 Z-10 F0.2 | G0 X60 Z-8 | "
+      "G0 Z2 | G0 X54 | G1 Z-10 F0.2 | G0 X58 Z-8 | G0 Z2 | G0 X52 | G1 Z-10 F0.2 | "
+      "G0 X56 Z-8 | G0 Z2 | G0 X50 | G1 Z-10 F0.2 | G1 X60 F0.2 | G0 Z2");
+}
+
+// §4.10: G73.7 needs no monotonicity; the TV-32 E8 contour runs as programmed.
+TEST(CyclesSpec_4_10, PatternRepeatAcceptsAPocket) {
+  EXPECT_EQ(contourCycle(60, 2, 0.2, {"G0 X30", "G1 Z-10", "X20 Z-20", "X40"}, "G73.7 R1",
+                         "G73.7 P50 Q80 F0.2"),
+            "G0 X30 | G1 Z-10 F0.2 | G1 X20 Z-20 F0.2 | G1 X40 F0.2 | G0 X60 Z2");
 }
 
 // §4.10 d = 1: one pass with the finishing allowance only.
