@@ -29,7 +29,8 @@ struct Run {
 Run run(double a, double b, double step) {
   Run r;
   r.length = std::abs(b - a), r.dir = sign(b - a);
-  r.count = r.length > kTol ? static_cast<long>(std::ceil(r.length / step - 1e-9)) : 0;
+  const double n = r.length > kTol ? std::ceil(r.length / step - 1e-9) : 0;
+  r.count = n > kMaxSteps ? kMaxSteps + 1 : static_cast<long>(n); // no overflow on tiny steps
   return r;
 }
 

@@ -219,6 +219,7 @@ TEST(CyclesSpec_7, GroovingParameters) {
   EXPECT_EQ(groove("G75.7 R0.5", "G75.7 X20 Z-10 P0 Q2.5 F0.05"), "40:16 CYC-PARAM");
   EXPECT_EQ(groove("G75.7 R0.5", "G75.7 X20 Z-10 P3 F0.05"), "40:1 CYC-PARAM");
   EXPECT_EQ(groove("G75.7 R-0.5", "G75.7 X20 Z-10 P3 Q2.5 F0.05"), "30:7 CYC-PARAM");
+  EXPECT_EQ(groove("G75.7 R0.5", "G75.7 X20 Z-10 P1e-300 Q2.5 F0.05"), "40:16 CYC-PARAM");
 }
 
 // --- rules beyond the vectors -----------------------------------------------------------------
@@ -258,6 +259,43 @@ TEST(CyclesSpec_4_2, G71InG19CutsAlongY) {
             "G0 Z75 | G1 Y-70 F1 | G0 Y-69 Z76 | G0 Y-56 | G0 Z70 | G1 Y-70 F1 | G0 Y-69 Z71 | "
             "G0 Y-56 | G0 Z65 | G1 Y-70 F1 | G0 Y-69 Z66 | G0 Y-56 | G0 Z62 | G1 Y-70 F1 | "
             "G1 Z80 F1 | G0 Y-56");
+}
+
+// TV-26 (c) (000:10464-10531) in G19 with Y a diameter axis: `G71.7 W5 R1` then
+// `G71.7 P220 Q310 W1 V2 F1.2` makes 5 cuts at Z75..Z55, each a feed in -Y from Y-56, then the
+// final pass, then G0 Y-56 Z80. The contour keeps the manual's corners; the `,C`/`,R` corners
+// and the N270 arc are the interpreter's to resolve and are left out (a line for N270). Δw = V2
+// is a diameter value: 1 in radius.
+TEST(CyclesSpec_8_TV26, G71InG19MakesFiveCuts) {
+  cycles::TurningRequest req;
+  req.plane = motion::Plane::YZ;
+  req.start = cycles::Vec3(0, -28, 80);
+  req.feed = 1.2;
+  const double yz[][2] = {{-56, 50},  {-76, 50},  {-80, 50},  {-80, 55},    {-130, 55},
+                          {-150, 65}, {-150, 70}, {-170, 70}, {-170, 77.5}, {-170, 80}};
+  cycles::Vec3 from = req.start;
+  for (unsigned i = 0; i < std::size(yz); ++i) {
+    cycles::ContourSegment s;
+    s.kind = i < 2 ? cycles::OpKind::Rapid : cycles::OpKind::Feed;
+    s.from = from, s.to = cycles::Vec3(0, yz[i][0] / 2, yz[i][1]), s.range = at(220 + i);
+    req.contour.push_back(s);
+    from = s.to;
+  }
+  diag::Engine diags;
+  cycles::TurningModal modal;
+  cycles::updateModal(modal, words("G71.7 W5 R1", 200, 2, req.plane), diags);
+  const auto w = words("G71.7 P220 Q310 W1 V2 F1.2", 210, 2, req.plane);
+  const auto ops = cycles::expandTurning(req, modal, w, diags);
+  ASSERT_TRUE(ops);
+  EXPECT_EQ(cycles::opsText(req.start, *ops, "XYZ", 2),
+            "G0 Z75 | G1 Y-168 F1.2 | G0 Y-166 Z76 | G0 Y-56 | "
+            "G0 Z70 | G1 Y-148 F1.2 | G0 Y-146 Z71 | G0 Y-56 | "
+            "G0 Z65 | G1 Y-146 F1.2 | G0 Y-144 Z66 | G0 Y-56 | "
+            "G0 Z60 | G1 Y-136 F1.2 | G0 Y-134 Z61 | G0 Y-56 | "
+            "G0 Z55 | G1 Y-78 F1.2 | G0 Y-76 Z56 | G0 Y-56 | "
+            "G0 Y-54 Z51 | G1 Y-74 F1.2 | G1 Y-78 F1.2 | G1 Z56 F1.2 | G1 Y-128 F1.2 | "
+            "G1 Y-148 Z66 F1.2 | G1 Z71 F1.2 | G1 Y-168 F1.2 | G1 Z78.5 F1.2 | G1 Z81 F1.2 | "
+            "G0 Y-56 Z80");
 }
 
 // §4.8 with an arc: the level cuts end on the circle, the final pass keeps the arc (G2 R10).
