@@ -249,13 +249,7 @@ TEST(CyclesSpec_4_2, G71InG19CutsAlongY) {
   req.contour = {seg(cycles::OpKind::Rapid, {0, -56, 80}, {0, -56, 62}, 50),
                  seg(cycles::OpKind::Feed, {0, -56, 62}, {0, -70, 62}, 51),
                  seg(cycles::OpKind::Feed, {0, -70, 62}, {0, -70, 80}, 52)};
-  diag::Engine diags;
-  cycles::TurningModal modal;
-  cycles::updateModal(modal, words("G71.7 W5 R1", 30, 0, req.plane), diags);
-  const auto w = words("G71.7 P50 Q52 F1", 40, 0, req.plane);
-  const auto ops = cycles::expandTurning(req, modal, w, diags);
-  ASSERT_TRUE(ops);
-  EXPECT_EQ(cycles::opsText(req.start, *ops),
+  EXPECT_EQ(expand(req, "G71.7 W5 R1", "G71.7 P50 Q52 F1", 0),
             "G0 Z75 | G1 Y-70 F1 | G0 Y-69 Z76 | G0 Y-56 | G0 Z70 | G1 Y-70 F1 | G0 Y-69 Z71 | "
             "G0 Y-56 | G0 Z65 | G1 Y-70 F1 | G0 Y-69 Z66 | G0 Y-56 | G0 Z62 | G1 Y-70 F1 | "
             "G1 Z80 F1 | G0 Y-56");
@@ -281,13 +275,7 @@ TEST(CyclesSpec_8_TV26, G71InG19MakesFiveCuts) {
     req.contour.push_back(s);
     from = s.to;
   }
-  diag::Engine diags;
-  cycles::TurningModal modal;
-  cycles::updateModal(modal, words("G71.7 W5 R1", 200, 2, req.plane), diags);
-  const auto w = words("G71.7 P220 Q310 W1 V2 F1.2", 210, 2, req.plane);
-  const auto ops = cycles::expandTurning(req, modal, w, diags);
-  ASSERT_TRUE(ops);
-  EXPECT_EQ(cycles::opsText(req.start, *ops, "XYZ", 2),
+  EXPECT_EQ(expand(req, "G71.7 W5 R1", "G71.7 P220 Q310 W1 V2 F1.2", 2),
             "G0 Z75 | G1 Y-168 F1.2 | G0 Y-166 Z76 | G0 Y-56 | "
             "G0 Z70 | G1 Y-148 F1.2 | G0 Y-146 Z71 | G0 Y-56 | "
             "G0 Z65 | G1 Y-146 F1.2 | G0 Y-144 Z66 | G0 Y-56 | "
