@@ -103,8 +103,15 @@ inline constexpr const char* CycleRadiusComp = "CYC-RADCOMP";            // warn
 inline constexpr const char* PocketMacroError1 = "4001"; // MACRO ERROR 1: data not given
 inline constexpr const char* PocketMacroError2 = "4002"; // MACRO ERROR 2: sizes
 inline constexpr const char* PocketMacroMissing = "CYC-POCKET-MACRO-MISSING"; // no O9999
-// turning contours ns..nf (cycles.md §4.7, §7), found and checked by the interpreter
-inline constexpr const char* CyclePQNotFound = "CYC-PQ-NOTFOUND";     // P/Q missing or N not found
+
+// --- cycles (cycles.md §7): turning cycles G70.7-G79.7 (§4)
+inline constexpr const char* CyclePQNotFound = "CYC-PQ-NOTFOUND";     // P/Q missing, no such N
+inline constexpr const char* CycleNsMode = "CYC-NS-MODE";             // ns block without G0/G1
+inline constexpr const char* CycleNonMonotonic = "CYC-NONMONOTONIC";  // type-I contour
 inline constexpr const char* CycleContourCommand = "CYC-CONTOUR-CMD"; // forbidden in ns..nf
+inline constexpr const char* CycleType2 = "CYC-TYPE2-UNSUPPORTED";    // G71.7/G72.7 type II
+inline constexpr const char* CycleContourDegenerate = "CYC-CONTOUR-DEGENERATE"; // nothing to cut
+inline constexpr const char* CycleParam = "CYC-PARAM";     // a bad cycle parameter
+inline constexpr const char* ThreadSpecification = "2021"; // G78.7/G76.7 lead <= 0
 
 } // namespace gcx::diag::code
