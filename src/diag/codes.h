@@ -111,7 +111,8 @@ inline constexpr const char* CycleNonMonotonic = "CYC-NONMONOTONIC";  // type-I 
 inline constexpr const char* CycleContourCommand = "CYC-CONTOUR-CMD"; // forbidden in ns..nf
 inline constexpr const char* CycleType2 = "CYC-TYPE2-UNSUPPORTED";    // G71.7/G72.7 type II
 inline constexpr const char* CycleContourDegenerate = "CYC-CONTOUR-DEGENERATE"; // nothing to cut
-inline constexpr const char* CycleParam = "CYC-PARAM";     // a bad cycle parameter
-inline constexpr const char* ThreadSpecification = "2021"; // G78.7/G76.7 lead <= 0
+inline constexpr const char* CycleParam = "CYC-PARAM";          // a bad cycle parameter
+inline constexpr const char* ThreadSpecification = "2021";      // G78.7/G76.7 lead <= 0
+inline constexpr const char* CycleThreadCss = "CYC-THREAD-CSS"; // warning: threading in G96
 
 } // namespace gcx::diag::code

@@ -109,11 +109,16 @@ bool Interpreter::drillBlock(const BlockWords& w, bool consumedAxes) {
 }
 
 bool Interpreter::runCycleOps(const std::vector<cycles::CycleOp>& ops, std::size_t auxAt,
-                              const BlockWords& w, int drillSlot) {
+                              const BlockWords& w, int drillSlot, const char* passName) {
   const int n = motion::axesOf(state_.plane).normal;
+  const std::size_t depth = from_.chain.size();
   for (std::size_t k = 0; k < ops.size(); ++k) {
     if (k == auxAt && !afterMotion(w)) return false;
     const cycles::CycleOp& op = ops[k];
+    if (passName && (k == 0 || op.step != ops[k - 1].step)) { // each pass a frame (provenance)
+      from_.chain.resize(depth);
+      from_.chain.push_back({blockRange_.begin, fmt::format("{} pass {}", passName, op.step)});
+    }
     using cycles::OpKind;
     switch (op.kind) {
     case OpKind::Rapid:
@@ -127,7 +132,11 @@ bool Interpreter::runCycleOps(const std::vector<cycles::CycleOp>& ops, std::size
         to[n] = program_[n];
       }
       double lead = 0;
-      if (op.kind == OpKind::Thread) lead = mm(op.value);
+      double feed = op.feed;
+      if (op.kind == OpKind::Thread) { // G33: F follows the lead and the spindle speed
+        lead = op.value;
+        feed = state_.perRevolution ? lead : lead * state_.spindleSpeed;
+      }
       if (op.kind == OpKind::RigidTap) {
         if (op.direction != state_.spindleDirection) {
           state_.spindleDirection = op.direction;
@@ -140,7 +149,7 @@ bool Interpreter::runCycleOps(const std::vector<cycles::CycleOp>& ops, std::size
         lead = state_.perRevolution ? op.feed : op.feed / state_.spindleSpeed;
       }
       const Kind kind = op.kind == OpKind::Rapid ? Kind::Rapid : Kind::Feed;
-      emitLine(kind, toMachine(to), extraTo, op.kind == OpKind::Thread ? 0 : op.feed, lead);
+      emitLine(kind, toMachine(to), extraTo, feed, lead);
       program_ = to;
       break;
     }
@@ -185,6 +194,7 @@ bool Interpreter::runCycleOps(const std::vector<cycles::CycleOp>& ops, std::size
     }
     }
   }
+  if (passName) from_.chain.resize(depth);
   if (auxAt != kNoAux && auxAt >= ops.size()) return afterMotion(w);
   return true;
 }

@@ -341,7 +341,13 @@ bool Interpreter::applyModal(const BlockWords& w) {
         pendingTurning_ = g->code10;
         break;
       }
-      [[fallthrough]];
+      // G77.7-G79.7 hold group 1: every block with axis words repeats the cycle (§4.1)
+      state_.motion = GAction::TurningCycle;
+      turningMode_ = g->code10;
+      turningEnd_.reset();
+      turningTaper_.reset();
+      if (state_.cycle == GAction::DrillCycle) cancelCycleMode();
+      break;
     default:
       return fail(diag::code::NotImplemented, word.range,
                   fmt::format("{} ({}) is not implemented yet", gName(word), g->meaning));
@@ -777,6 +783,8 @@ bool Interpreter::move(const BlockWords& w) {
     const motion::PlaneAxes ax = motion::axesOf(state_.plane);
     return arc(w, to, extraTo, axisGiven(w, ax.first) || axisGiven(w, ax.second));
   }
+  case GAction::TurningCycle:
+    return turningCycle(*cycles::turningCycleFromCode10(turningMode_), w);
   default:
     return fail(diag::code::NotImplemented, blockRange_, "motion mode not implemented yet");
   }

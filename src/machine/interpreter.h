@@ -6,10 +6,10 @@
 #include <array>
 #include <cstdint>
 #include <functional>
-#include <utility>
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "diag/diagnostic.h"
 #include "dialect/profile.h"
@@ -19,6 +19,7 @@
 #include "machine/transforms.h"
 #include "motion/event.h"
 #include "passes/cycles/drilling.h"
+#include "passes/cycles/turning.h"
 
 namespace gcx::machine {
 
@@ -191,8 +192,12 @@ private:
   bool contourBlocks(const BlockWords& w, std::vector<ContourBlock>& out);
   /// The contour's moves as a scratch copy of this interpreter makes them, in program
   /// coordinates; G40-G42 are left out (roughing ignores them, Q-14).
-  bool traceContour(const std::vector<ContourBlock>& blocks, std::vector<cycles::CycleOp>& out,
-                    std::vector<SourceRange>& ranges);
+  bool traceContour(const std::vector<ContourBlock>& blocks,
+                    std::vector<cycles::ContourSegment>& out);
+  /// A turning-cycle block: stores a first block's values or runs the cycle (G71.7-G79.7).
+  bool turningCycle(cycles::TurningCycle cycle, const BlockWords& w);
+  /// The block's words for the turning library: raw values in mm, diameters not halved.
+  cycles::TurningWords turningWords(cycles::TurningCycle cycle, const BlockWords& w) const;
   Vec3 toProgram(const Vec3& machine) const {
     return transforms_.applyInverse(machine - workOrigin());
   }
@@ -205,8 +210,9 @@ private:
   void cancelCycleMode();
   /// Executes cycle ops; the block's M S T run before ops[auxAt] (never if auxAt is npos).
   /// `drillSlot` 3-5 when a parallel axis U V W drills: its value travels in the normal slot.
+  /// With passName, each op step is a frame of the provenance chain ("G71.7 pass 3").
   bool runCycleOps(const std::vector<cycles::CycleOp>& ops, std::size_t auxAt, const BlockWords& w,
-                   int drillSlot);
+                   int drillSlot, const char* passName = nullptr);
   /// End positions of A B C (rollover rules) and of U V W axes for the words of a block.
   motion::Extra extraTarget(const BlockWords& w) const;
   double rotaryDelta(double current, double value) const;
@@ -237,7 +243,11 @@ private:
   ContourSource contours_;
   std::optional<std::int64_t> resumeAfter_;
   int pendingTurning_ = 0; // code10 of a one-shot turning cycle in the current block
-  int lockedFrom_ = 0; // the group-15 code a tapping cycle's G63 replaced
+  cycles::TurningModal turning_;
+  int turningMode_ = 0;                // code10 of the modal G77.7-G79.7 while group 1 holds it
+  std::optional<Vec3> turningEnd_;     // its last end point: omitted X/Z repeat it (§4.1)
+  std::optional<double> turningTaper_; // and its R
+  int lockedFrom_ = 0;                 // the group-15 code a tapping cycle's G63 replaced
   bool deferCycles_ = false;
   bool ended_ = false;
   bool dataMode_ = false;

@@ -7,6 +7,7 @@
 #include "diag/codes.h"
 #include "emit/number.h"
 #include "machine/interpreter.h"
+#include "motion/geometry.h"
 
 namespace gcx::machine {
 
@@ -90,34 +91,126 @@ bool Interpreter::contourBlocks(const BlockWords& w, std::vector<ContourBlock>& 
 }
 
 bool Interpreter::traceContour(const std::vector<ContourBlock>& blocks,
-                               std::vector<cycles::CycleOp>& out,
-                               std::vector<SourceRange>& ranges) {
+                               std::vector<cycles::ContourSegment>& out) {
   Capture capture;
   Interpreter probe(*this);
   probe.sink_ = &capture;
   probe.contours_ = nullptr;
+  auto isComp = [&](const GCodeSpec* g) {
+    return g && (g->action == GAction::RadiusCompOff || g->action == GAction::RadiusCompLeft ||
+                 g->action == GAction::RadiusCompRight);
+  };
+  auto isMotion = [&](const GCodeSpec* g) {
+    return g && (g->action == GAction::Rapid || g->action == GAction::Linear ||
+                 g->action == GAction::ArcCW || g->action == GAction::ArcCCW);
+  };
   for (const ContourBlock& c : blocks) {
     ir::Block b = c.block;
+    bool modeProgrammed = false;
     std::erase_if(b.words, [&](const ir::Word& w) {
       const GCodeSpec* g = w.is('G') ? profile_.gcode(w.number) : nullptr;
-      return g && (g->action == GAction::RadiusCompOff || g->action == GAction::RadiusCompLeft ||
-                   g->action == GAction::RadiusCompRight);
+      modeProgrammed = modeProgrammed || isMotion(g);
+      return isComp(g);
     });
     const std::size_t before = capture.moves.size();
     if (!probe.execute(b, c.from)) return false;
-    ranges.resize(ranges.size() + (capture.moves.size() - before), c.block.range);
+    for (std::size_t i = before; i < capture.moves.size(); ++i) {
+      const motion::Event& e = capture.moves[i];
+      cycles::ContourSegment s;
+      s.kind = e.kind == Kind::Rapid  ? cycles::OpKind::Rapid
+               : e.kind == Kind::Feed ? cycles::OpKind::Feed
+               : e.clockwise          ? cycles::OpKind::ArcCW
+                                      : cycles::OpKind::ArcCCW;
+      s.from = toProgram(e.start);
+      s.to = toProgram(e.end);
+      s.center = toProgram(e.center);
+      s.feed = e.feed;
+      s.range = c.block.range;
+      s.modeProgrammed = modeProgrammed;
+      out.push_back(s);
+    }
   }
-  for (const motion::Event& e : capture.moves) {
-    cycles::CycleOp op;
-    op.kind = e.kind == Kind::Rapid  ? cycles::OpKind::Rapid
-              : e.kind == Kind::Feed ? cycles::OpKind::Feed
-              : e.clockwise          ? cycles::OpKind::ArcCW
-                                     : cycles::OpKind::ArcCCW;
-    op.to = toProgram(e.end);
-    op.center = toProgram(e.center);
-    op.feed = e.feed;
-    out.push_back(op);
+  return true;
+}
+
+cycles::TurningWords Interpreter::turningWords(cycles::TurningCycle cycle,
+                                               const BlockWords& w) const {
+  cycles::TurningWords t;
+  t.cycle = cycle;
+  t.plane = state_.plane;
+  t.diameter = state_.diameterAxes;
+  t.range = blockRange_;
+  const bool run = (w.p && w.q) || w.hasAxisWord(); // not a first block of a two-block format
+  auto put = [&](char letter, const ir::Word* x, bool length, bool axis) {
+    if (!x) return;
+    const bool incremental = axis && (state_.incremental || x->incremental);
+    t.set(letter, length ? mm(x->number) : x->number, x->range, incremental);
+  };
+  for (int a = 0; a < 3; ++a) {
+    put("XYZ"[a], w.axis[a], true, true);
+    put("UVW"[a], w.uvw[a], true, false);
+    put("IJK"[a], w.ijk[a], true, false);
   }
+  // counts and codes keep their number: G73.7 R d (passes), G76.7 P(m)(r)(a) of the first block
+  put('R', w.r, !(cycle == cycles::TurningCycle::G73 && !run), false);
+  put('P', w.p,
+      !(cycle == cycles::TurningCycle::G76 && !run) && cycle != cycles::TurningCycle::G70 &&
+          cycle != cycles::TurningCycle::G71 && cycle != cycles::TurningCycle::G72 &&
+          cycle != cycles::TurningCycle::G73,
+      false);
+  put('Q', w.q, cycle >= cycles::TurningCycle::G74, false);
+  put('F', w.f, true, false);
+  put('L', w.l, false, false);
+  return t;
+}
+
+bool Interpreter::turningCycle(cycles::TurningCycle cycle, const BlockWords& w) {
+  using cycles::TurningCycle;
+  const cycles::TurningWords words = turningWords(cycle, w);
+  switch (cycles::updateModal(turning_, words, diags_)) {
+  case cycles::TurningBlock::Error:
+    return false;
+  case cycles::TurningBlock::Stored:
+    return true;
+  case cycles::TurningBlock::Run:
+    break;
+  }
+  cycles::TurningRequest req;
+  req.plane = state_.plane;
+  req.start = program_;
+  req.feed = state_.feed;
+  std::vector<ContourBlock> blocks;
+  const bool contourCycle =
+      cycle == TurningCycle::G71 || cycle == TurningCycle::G72 || cycle == TurningCycle::G73;
+  if (contourCycle) {
+    if (!contourBlocks(w, blocks) || !traceContour(blocks, req.contour)) return false;
+  } else {
+    // the end point resolves like a move's; a repeat of G77.7-G79.7 keeps what it omits (§4.1)
+    const bool repeat = cycle >= TurningCycle::G77 && turningEnd_;
+    req.end = target(w, false);
+    const motion::PlaneAxes ax = motion::axesOf(state_.plane);
+    for (int a : {ax.first, ax.second})
+      if (repeat && !axisGiven(w, a)) req.end[a] = (*turningEnd_)[a];
+    if (cycle >= TurningCycle::G77) {
+      if (w.r) turningTaper_ = mm(w.r->number);
+      req.taper = turningTaper_.value_or(0);
+      turningEnd_ = req.end;
+    } else if (w.r && cycle == TurningCycle::G76) {
+      req.taper = mm(w.r->number);
+    }
+    if ((cycle == TurningCycle::G76 || cycle == TurningCycle::G78) && state_.surfaceSpeed)
+      diags_.warning(diag::code::CycleThreadCss, blockRange_,
+                     fmt::format("{} with constant surface speed G96 on: threading needs a fixed "
+                                 "spindle speed (000:1682-1683)",
+                                 cycles::turningCycleName(cycle)));
+  }
+  const auto ops = cycles::expandTurning(req, turning_, words, diags_);
+  if (!ops) return false;
+  // M S F of the P/Q block take effect at the start of the cycle (§4.7, 000:10482)
+  if (!runCycleOps(*ops, contourCycle ? 0 : static_cast<std::size_t>(-1), w,
+                   motion::axesOf(state_.plane).normal, cycles::turningCycleName(cycle)))
+    return false;
+  if (contourCycle) resumeAfter_ = static_cast<std::int64_t>(w.q->number);
   return true;
 }
 
@@ -143,16 +236,18 @@ bool Interpreter::finishingCycle(const BlockWords& w) {
 }
 
 bool Interpreter::turningBlock(const BlockWords& w) {
-  switch (pendingTurning_) {
-  case 707:
-    if (!finishingCycle(w)) return false;
-    break;
-  default:
+  const auto cycle = cycles::turningCycleFromCode10(pendingTurning_);
+  if (!cycle)
     return fail(
         diag::code::NotImplemented, blockRange_,
         fmt::format("G{} is not implemented yet", emit::formatNumber(pendingTurning_ / 10.0)));
-  }
-  return afterMotion(w);
+  if (*cycle == cycles::TurningCycle::G70) return finishingCycle(w) && afterMotion(w);
+  const bool contourRun =
+      (*cycle == cycles::TurningCycle::G71 || *cycle == cycles::TurningCycle::G72 ||
+       *cycle == cycles::TurningCycle::G73) &&
+      w.p && w.q;
+  if (!turningCycle(*cycle, w)) return false;
+  return contourRun || afterMotion(w); // a contour cycle ran the block's M S T before its passes
 }
 
 } // namespace gcx::machine

@@ -3,7 +3,7 @@
 // and every error and warning of §7 with its location.
 #include <gtest/gtest.h>
 
-#include "cycles/drill_harness.h"
+#include "cycles/cycle_harness.h"
 #include "diag/codes.h"
 #include "machine/setup.h"
 #include "passes/cycles/drilling.h"
@@ -19,15 +19,15 @@ DrillWord val(double v, bool incremental = false) {
   return DrillWord{v, incremental, {}};
 }
 
-DrillHarness run(const std::string& program, cycles::DrillConfig config = {}) {
-  DrillHarness h;
+CycleHarness run(const std::string& program, cycles::DrillConfig config = {}) {
+  CycleHarness h;
   h.config = config;
   EXPECT_TRUE(h.run(program)) << h.error();
   return h;
 }
 
 std::string failing(const std::string& program, cycles::DrillConfig config = {}) {
-  DrillHarness h;
+  CycleHarness h;
   h.config = config;
   EXPECT_FALSE(h.run(program));
   return h.error();

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "cycles/drill_harness.h"
+#include "cycles/cycle_harness.h"
 #include "diag/codes.h"
 #include "passes/cycles/drilling.h"
 
@@ -20,8 +20,8 @@ DrillWord val(double v, bool incremental = false) {
 }
 
 // Runs a vector and returns the harness (the vector's blocks are in out).
-DrillHarness run(const std::string& program, cycles::DrillConfig config = {}) {
-  DrillHarness h;
+CycleHarness run(const std::string& program, cycles::DrillConfig config = {}) {
+  CycleHarness h;
   h.config = config;
   EXPECT_TRUE(h.run(program)) << h.error();
   return h;
@@ -217,7 +217,7 @@ TEST(CyclesSpec_8_TV14, G76UnderG98ThenG99) {
 }
 
 TEST(CyclesSpec_8_TV14, WithoutOrientationIsError2137) {
-  DrillHarness h;
+  CycleHarness h;
   h.config.orient = false;
   EXPECT_FALSE(h.run(kTv14));
   EXPECT_EQ(h.error(), "N2 2137 2:1");
@@ -276,7 +276,7 @@ TEST(CyclesSpec_8_TV31, L0StoresWithoutDrilling) {
 
 std::string failing(const std::string& blocks, cycles::DrillConfig config = {},
                     bool wIsAxis = false) {
-  DrillHarness h;
+  CycleHarness h;
   h.config = config;
   h.wIsAxis = wIsAxis;
   EXPECT_FALSE(h.run("G17 G90 G0 X0 Y0 Z20\n" + blocks));
@@ -298,7 +298,7 @@ TEST(CyclesSpec_8_TV32, E2bNewDrillingAxisWWithoutRIsError2053) {
 }
 
 TEST(CyclesSpec_8_TV32, E2bWithRDrillsFromTheInitialLevelOfW) {
-  DrillHarness h;
+  CycleHarness h;
   h.wIsAxis = true;
   ASSERT_TRUE(h.run("G17 G90 G0 X0 Y0 Z20 F100\n"
                     "G0 Z200 W50\n"

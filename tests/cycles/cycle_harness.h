@@ -1,8 +1,10 @@
 // Runs the program text of a cycles.md §8 vector on the real interpreter and prints the motion
 // of every source block the way the vectors do ("N2: G0 X10 Y10 | G0 Z2 | G1 Z-5 F120"): each
-// move names the axes whose (rounded) value changes, feeds carry F, spindle-synchronised feeds
-// print as RTAP with the spindle speed and direction they run with. Blocks are labelled by
-// their N number, or "#line" without one.
+// move names the axes whose (rounded) value changes, diameter axes (`diameter` bits) doubled;
+// feeds carry F; spindle-synchronised feeds print as RTAP with the spindle speed and direction
+// they run with, or as G33 with their lead when `threads` is set. Blocks are labelled by their
+// N number, or "#line" without one. Programs with turning contours run through the expansion
+// pass (it holds the program for the contour's blocks), the others stream.
 #pragma once
 #include <fmt/format.h>
 #include <map>
@@ -15,17 +17,25 @@
 
 namespace gcx::test {
 
-class DrillHarness {
+class CycleHarness {
 public:
   cycles::DrillConfig config; // written into the setup's parameters (cycles.md §2.8)
   bool wIsAxis = false;       // N0103: W is an axis parallel to Z (cycles.md §2.2)
   machine::Setup setup;       // anything else
+  unsigned diameter = 0;      // bit a: axis a is printed as a diameter
+  bool threads = false;       // synchronised feeds are G33 threads, not rigid taps
 
   /// Runs the program; false when it reported an error (error() names it).
   bool run(const std::string& program) {
     labelLines(program);
     applyConfig();
-    const ProgramRun r = runNct(program, setup);
+    const bool whole =
+        program.find("G70.7") != std::string::npos || program.find("G71.7") != std::string::npos ||
+        program.find("G72.7") != std::string::npos || program.find("G73.7") != std::string::npos;
+    ProgramRun r =
+        whole ? runMacro({{"O0001.nct", program}}, "O0001.nct", {}, setup) : runNct(program, setup);
+    for (std::string& e : r.errors) // "O0001.nct:2:1 CODE" -> "2:1 CODE"
+      if (e.starts_with("O0001.nct:")) e.erase(0, 10);
     for (const motion::Event& e : r.events)
       render(e);
     // "test.nct:2:1: warning: ... [CODE]" -> "2:1 CODE"
@@ -78,14 +88,30 @@ private:
     switch (e.kind) {
     case motion::Kind::Rapid:
     case motion::Kind::Feed:
-      s = e.kind == motion::Kind::Rapid ? "G0" : e.lead > 0 ? "RTAP" : "G1";
-      for (int a = 0; a < 3; ++a)
-        if (n4(e.end[a]) != n4(e.start[a])) s += fmt::format(" {}{}", "XYZ"[a], n4(e.end[a]));
+      s = e.kind == motion::Kind::Rapid ? "G0" : e.lead > 0 ? (threads ? "G33" : "RTAP") : "G1";
+      for (int a = 0; a < 3; ++a) {
+        const double k = (diameter >> a) & 1u ? 2 : 1;
+        if (n4(k * e.end[a]) != n4(k * e.start[a]))
+          s += fmt::format(" {}{}", "XYZ"[a], n4(k * e.end[a]));
+      }
       for (int a = 0; a < 6; ++a)
         if (n4(e.extraEnd[a]) != n4(e.extraStart[a]))
           s += fmt::format(" {}{}", motion::kExtraAxisNames[a], n4(e.extraEnd[a]));
+      if (e.lead > 0 && threads) {
+        s += " F" + n4(e.lead);
+        break;
+      }
       if (e.kind == motion::Kind::Feed) s += " F" + n4(e.feed);
       if (e.lead > 0) s += fmt::format(" S{} DIR={}", n4(speed_), direction_ > 0 ? "CW" : "CCW");
+      break;
+    case motion::Kind::Arc:
+      s = e.clockwise ? "G2" : "G3";
+      for (int a = 0; a < 3; ++a) {
+        const double k = (diameter >> a) & 1u ? 2 : 1;
+        if (n4(k * e.end[a]) != n4(k * e.start[a]))
+          s += fmt::format(" {}{}", "XYZ"[a], n4(k * e.end[a]));
+      }
+      s += " R" + n4(e.startRadius) + " F" + n4(e.feed);
       break;
     case motion::Kind::Dwell:
       s = "G4 P" + n4(e.value);
