@@ -24,6 +24,8 @@ demo: build
 	$(BUILD)/gcx expand examples/nct/O1001.nct --to canonical --setup examples/nct/O1001.setup.json --provenance
 	@echo "== gcx run --stats: the interpreter's path length, time and bounds"
 	$(BUILD)/gcx run examples/nct/O1001.nct --setup examples/nct/O1001.setup.json --stats
+	@echo "== canned cycles: G71.7 roughing passes and G70.7 finishing of a mill-turn example"
+	$(BUILD)/gcx expand examples/nct/O1010.nct --to canonical --setup examples/nct/O1010.setup.json --provenance
 	@echo "== gcx plot: the tool path as SVG"
 	$(BUILD)/gcx plot examples/nct/O1001.nct --setup examples/nct/O1001.setup.json -o $(BUILD)/O1001.svg
 	@echo "wrote $(BUILD)/O1001.svg"

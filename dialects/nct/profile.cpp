@@ -96,7 +96,7 @@ Profile build() {
       {431, 8, "length compensation along tool axis"},
       {434, 8, "TCP type 1"},
       {435, 8, "TCP type 2"},
-      {437, 8, "turning offsets"},
+      {437, 8, "turning offsets", A::TurningOffsets},
       {438, 8, "turning point control"},
       {439, 8, "turning point control"},
       {490, 8, "length compensation off", A::LengthCancel},

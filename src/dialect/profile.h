@@ -61,6 +61,7 @@ enum class GAction : unsigned char {
   LengthPlus,
   LengthMinus,
   LengthCancel,
+  TurningOffsets, // G43.7 H: the tool's X Y Z turning offsets on all three axes
   RadiusCompOff,
   RadiusCompLeft,
   RadiusCompRight,

@@ -67,6 +67,7 @@ void Interpreter::resetModal() {
       state_.diameterAxes |= 1u << a;
   offsets_.g92 = offsets_.g52 = Vec3::Zero();
   offsets_.length = 0;
+  offsets_.turning = Vec3::Zero();
   transforms_.clear();
 }
 
@@ -118,7 +119,7 @@ Vec3 Interpreter::currentWorkOffset() const {
 
 Vec3 Interpreter::workOrigin() const {
   return offsets_.common + currentWorkOffset() + offsets_.g92 + offsets_.g52 +
-         Vec3(0, 0, offsets_.length);
+         Vec3(0, 0, offsets_.length) + offsets_.turning;
 }
 
 Vec3 Interpreter::toMachine(const Vec3& program) const {
@@ -316,6 +317,7 @@ bool Interpreter::applyModal(const BlockWords& w) {
     case GAction::LengthPlus:
     case GAction::LengthMinus:
     case GAction::LengthCancel:
+    case GAction::TurningOffsets:
     case GAction::RotateOn:
     case GAction::RotateOff:
     case GAction::ScaleOn:
@@ -356,22 +358,22 @@ bool Interpreter::applyModal(const BlockWords& w) {
   if (w.f) state_.feed = mm(w.f->number);
   // length compensation: a coordinate transformation, never a move of its own (nct.md §3.16)
   const ir::Word* lengthCode = nullptr;
-  for (GAction a : {GAction::LengthPlus, GAction::LengthMinus, GAction::LengthCancel})
+  for (GAction a :
+       {GAction::LengthPlus, GAction::LengthMinus, GAction::LengthCancel, GAction::TurningOffsets})
     if (const ir::Word* x = w.findAction(a)) lengthCode = x;
-  if (lengthCode || (w.h && state_.lengthSign != 0)) {
-    if (lengthCode) {
-      const GCodeSpec* g = profile_.gcode(lengthCode->number);
-      state_.lengthSign = g->action == GAction::LengthPlus    ? 1
-                          : g->action == GAction::LengthMinus ? -1
-                                                              : 0;
+  if (lengthCode || (w.h && (state_.lengthSign != 0 || state_.turningOffsets))) {
+    if (lengthCode) { // G43.7 applies the turning offsets; G43 G44 G49 return to length (§3.16)
+      const GAction a = profile_.gcode(lengthCode->number)->action;
+      state_.lengthSign = a == GAction::LengthPlus ? 1 : a == GAction::LengthMinus ? -1 : 0;
+      state_.turningOffsets = a == GAction::TurningOffsets;
     }
     if (w.h) state_.lengthRegister = static_cast<int>(w.h->number);
-    double length = 0;
-    if (state_.lengthSign != 0) {
-      auto it = setup_.tools.find(state_.lengthRegister);
-      length = state_.lengthSign * (it == setup_.tools.end() ? 0.0 : it->second.length);
-    }
-    offsets_.length = length;
+    auto it = setup_.tools.find(state_.lengthRegister);
+    const ToolData tool = it == setup_.tools.end() ? ToolData{} : it->second;
+    offsets_.length = state_.lengthSign * tool.length;
+    offsets_.turning = state_.turningOffsets
+                           ? Vec3(tool.turning[0], tool.turning[1], tool.turning[2])
+                           : Vec3::Zero();
     reexpress();
   }
   return transforms(w);
@@ -513,7 +515,8 @@ bool Interpreter::applyNonMotion(const BlockWords& w, bool& consumed) {
 
 bool Interpreter::setCoordinates(const BlockWords& w) {
   // the current tool tip gets the coordinates v in every work system (nct.md §3.14)
-  const Vec3 local = machine_ - offsets_.common - currentWorkOffset() - Vec3(0, 0, offsets_.length);
+  const Vec3 local = machine_ - offsets_.common - currentWorkOffset() -
+                     Vec3(0, 0, offsets_.length) - offsets_.turning;
   for (int a = 0; a < 3; ++a) {
     if (w.uvw[a])
       return fail(diag::code::IllegalIncremental, w.uvw[a]->range,

@@ -31,9 +31,10 @@ struct ModalState {
   bool incremental = false;
   bool perRevolution = false;
   bool polar = false;
-  int workOffset = 1;     // 1..6 = G54..G59; 100 + p = G54.1 Pp
-  int lengthSign = 0;     // +1 G43, -1 G44, 0 G49
-  int lengthRegister = 0; // H
+  int workOffset = 1;          // 1..6 = G54..G59; 100 + p = G54.1 Pp
+  int lengthSign = 0;          // +1 G43, -1 G44, 0 G49
+  int lengthRegister = 0;      // H
+  bool turningOffsets = false; // G43.7: the H register's turning offsets are on
   GAction radiusComp = GAction::RadiusCompOff;
   GAction cycle = GAction::CycleCancel;
   bool returnToR = false; // G99 (group 10); G98 at power-on, reset and cycle cancel
@@ -141,7 +142,8 @@ private:
     Vec3 common = Vec3::Zero();
     Vec3 g92 = Vec3::Zero();
     Vec3 g52 = Vec3::Zero();
-    double length = 0; // along Z (N1416 ZAX=1)
+    double length = 0;           // along Z (N1416 ZAX=1)
+    Vec3 turning = Vec3::Zero(); // G43.7 (nct.md §3.16)
   };
 
   bool fail(const char* code, const SourceRange& where, std::string message);

@@ -512,13 +512,20 @@ private:
       bool ok = good;
       for (auto f = it.value().begin(); f != it.value().end(); ++f) {
         const Path field = child(at, f.key());
+        if (f.key() == "turning") {
+          if (auto t = triple(f.value(), field, fmt::format("{} turning", what)))
+            tool.turning = *t;
+          else
+            ok = false;
+          continue;
+        }
         double* target = f.key() == "length"   ? &tool.length
                          : f.key() == "radius" ? &tool.radius
                                                : nullptr;
         if (!target) {
           atKey(field, code::SetupUnknownKey,
-                fmt::format("unknown key {} in {}; the keys are length, radius", keyName(f.key()),
-                            what));
+                fmt::format("unknown key {} in {}; the keys are length, radius, turning",
+                            keyName(f.key()), what));
           continue;
         }
         if (auto x = number(f.value(), field, fmt::format("{} {}", what, f.key())))

@@ -3,7 +3,7 @@
 // A JSON file; every section is optional and a missing one means the nct.md §0.2 reference
 // profile (machine at 0,0,0, no offsets):
 //   {"work_offsets": {"G54": [x, y, z], "G54.1 P1": [x, y, z], "common": [x, y, z]},
-//    "tools": {"1": {"length": 101.6, "radius": 5}},
+//    "tools": {"1": {"length": 101.6, "radius": 5}, "11": {"turning": [152.3, 0, 96.5]}},
 //    "parameters": {"N1339": 0.01, "N0607.ORI": 1, "N1300.3": 1},
 //    "variables": {"#500": 1.5},
 //    "initial_position": [x, y, z],
@@ -26,6 +26,8 @@ namespace gcx::machine {
 struct ToolData {
   double length = 0; // mm, offset register n = tool n
   double radius = 0; // mm
+  /// G43.7 turning offsets X Y Z (geometry + wear), mm in the machine frame (nct.md §3.16)
+  std::array<double, 3> turning{0, 0, 0};
 };
 
 struct Setup {

@@ -138,6 +138,18 @@ TEST(NctSpec_7, TV13_ToolLengthCompensationIsATransformation) {
   EXPECT_EQ(withoutEnd(runNct("G43 H2\n", s).motion()), V{});
 }
 
+// nct.md §3.16: G43.7 H applies the register's turning offsets on all three axes as a
+// transformation; G43 returns to the length offset, G49 cancels (000:7194-7237).
+TEST(NctSpec_3_16, TurningOffsetsG43_7) {
+  machine::Setup s;
+  s.tools[11].turning = {150, 0, 90};
+  s.tools[11].length = 40;
+  ProgramRun r = runNct("G18 G90 G43.7 H11\nG0 X10 Z5\nG43 H11\nG0 X20\nG49\nG0 Z1\n", s);
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  // G43 re-expresses the position (nothing moves): X20 keeps the machine Z of 95
+  EXPECT_EQ(withoutEnd(r.motion()), (V{"R 160,0,95", "R 20,0,95", "R 20,0,1"}));
+}
+
 TEST(NctSpec_7, TV14_WorkOffsetsG52G92) {
   machine::Setup s = at(1000, 1300, 0);
   s.workOffsets["G54"] = {300, 800, 0};

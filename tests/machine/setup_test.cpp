@@ -145,7 +145,19 @@ TEST(Setup, UnknownKeysNameTheAllowedOnes) {
   EXPECT_EQ(l.message(0), "unknown key \"tool\" in the setup; the keys are work_offsets, tools, "
                           "parameters, variables, initial_position, block_skip, "
                           "reference_points, rapid_rate");
-  EXPECT_EQ(l.message(1), "unknown key \"diameter\" in tool 3; the keys are length, radius");
+  EXPECT_EQ(l.message(1),
+            "unknown key \"diameter\" in tool 3; the keys are length, radius, turning");
+}
+
+TEST(Setup, TurningOffsetsAreThreeNumbers) { // G43.7 (nct.md §3.16)
+  Loaded l;
+  parse(l, R"({"tools": {"11": {"turning": [152.3, 0, 96.5]}}})");
+  ASSERT_TRUE(l.setup) << l.rendered();
+  EXPECT_EQ(l.setup->tools.at(11).turning, (Xyz{152.3, 0, 96.5}));
+  Loaded bad;
+  parse(bad, R"({"tools": {"11": {"turning": [1, 2]}}})");
+  EXPECT_FALSE(bad.setup);
+  EXPECT_EQ(bad.errors(), (std::vector<std::string>{"1:30 GCX023"}));
 }
 
 TEST(Setup, WrongTypesAreLocatedAtTheValue) {
