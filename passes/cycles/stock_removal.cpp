@@ -86,8 +86,11 @@ TurningOps expandStockRemoval(const TurningRequest& req, const TurningModal& m,
     path.pass(k);
     roughPass(path, c, *frame, level, farEnd, m.roughRetract, req.feed);
   }
-  path.pass(k); // the final semi-finishing pass
-  contourPass(path, c, req.feed);
+  if (req.choices.roughingFinalPass) { // the final semi-finishing pass
+    path.pass(k);
+    contourPass(path, c, req.feed);
+  }
+  path.rapid(a); // §4.8 step 6 (without the final pass: from the last retract)
   return std::move(path.ops());
 }
 
@@ -106,8 +109,11 @@ TurningOps expandPatternRepeat(const TurningRequest& req, const TurningModal& m,
   const Vec2 finish = allowance(w);
   TurningPath path(req.start, req.plane);
   for (int k = 1; k <= d; ++k) {
-    // §4.10: o_k = Δ·(d−k)/(d−1) + allowance; d = 1: the allowance only (Fanuc spacing, Q-16)
-    const double t = d == 1 ? 0.0 : static_cast<double>(d - k) / (d - 1);
+    // §4.10: o_k = Δ·(d−k)/(d−1) + allowance; d = 1: the allowance only (Fanuc spacing, Q-16);
+    // the textbook's Δ·(d−k)/d where the dialect chooses it
+    const double t = req.choices.patternStepByPassCount ? static_cast<double>(d - k) / d
+                     : d == 1                           ? 0.0
+                                                        : static_cast<double>(d - k) / (d - 1);
     path.pass(k);
     contourPass(path, shifted(*profile, finish + t * Vec2(m.reliefP1, m.reliefP2)), req.feed);
   }

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "diag/diagnostic.h"
+#include "dialect/profile.h"
 #include "passes/cycles/contour.h"
 #include "passes/cycles/ops.h"
 #include "passes/cycles/turning_state.h"
@@ -35,6 +36,7 @@ struct TurningRequest {
   double taper = 0;          // G76.7-G79.7: R, radius, signed (start minus end)
   double feed = 0;           // F; G76.7 and G78.7: the lead
   std::vector<ContourSegment> contour; // G71.7-G73.7: blocks ns..nf
+  CycleChoices choices;                // the dialect's answers to cycles.md §9
 };
 
 /// The ops of one run of the cycle `words.cycle`. Errors (§7): CYC-PARAM at the offending word,

@@ -125,8 +125,19 @@ struct CycleMacro {
   std::function<bool(const CycleMacroCall&, diag::Engine&)> check;
 };
 
+/// Canned-cycle behaviour the dialect's manual leaves open, chosen per dialect (cycles.md §9).
+struct CycleChoices {
+  /// G71/G72 roughing ends with a semi-finishing pass along the shifted contour (Fanuc, with
+  /// its parameter RF1 = 0; Q-15).
+  bool roughingFinalPass = true;
+  /// G73 pattern repeat: relief step Δi/d (the textbook, 003:8930-8931) instead of Fanuc's
+  /// Δi/(d-1).
+  bool patternStepByPassCount = false;
+};
+
 struct Profile {
   std::string name;
+  CycleChoices cycleChoices;
   std::vector<AddressSpec> addresses;
   std::vector<GCodeSpec> gcodes;
   int maxMCodesPerBlock = 8;

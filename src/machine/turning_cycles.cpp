@@ -179,6 +179,7 @@ bool Interpreter::turningCycle(cycles::TurningCycle cycle, const BlockWords& w) 
   req.plane = state_.plane;
   req.start = program_;
   req.feed = state_.feed;
+  req.choices = profile_.cycleChoices;
   std::vector<ContourBlock> blocks;
   const bool contourCycle =
       cycle == TurningCycle::G71 || cycle == TurningCycle::G72 || cycle == TurningCycle::G73;

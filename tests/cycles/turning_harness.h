@@ -118,9 +118,10 @@ inline cycles::TurningRequest request(double xDiameter, double z) {
 /// A contour cycle (G71.7-G73.7) at A = (X diameter, Z) in G18 with roughing feed f.
 inline std::string contourCycle(double xDiameter, double z, double f,
                                 const std::vector<std::string>& blocks, const std::string& first,
-                                const std::string& run) {
+                                const std::string& run, CycleChoices choices = {}) {
   auto req = request(xDiameter, z);
   req.feed = f;
+  req.choices = choices;
   req.contour = contour(req.start, blocks);
   return expand(req, first, run);
 }

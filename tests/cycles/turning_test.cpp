@@ -57,6 +57,34 @@ TEST(CyclesSpec_8_TV19, G73ThreePassesWithFanucSpacing) {
             "G0 X60 Z5");
 }
 
+// Q-15 as a dialect choice: without the final pass the roughing ends with a rapid to A from
+// the last retract.
+TEST(CyclesSpec_9_Q15, RoughingWithoutTheFinalPass) {
+  CycleChoices noFinal;
+  noFinal.roughingFinalPass = false;
+  EXPECT_EQ(contourCycle(60, 2, 0.3, {"G0 X30", "G1 Z-20 F0.15", "X50 Z-30", "Z-40", "X60"},
+                         "G71.7 U3 R1", "G71.7 P50 Q90 U0.4 W0.1 F0.3", noFinal),
+            "G0 X54 | G1 Z-39.9 F0.3 | G0 X56 Z-38.9 | G0 Z2 | "
+            "G0 X48 | G1 Z-28.7 F0.3 | G0 X50 Z-27.7 | G0 Z2 | "
+            "G0 X42 | G1 Z-25.7 F0.3 | G0 X44 Z-24.7 | G0 Z2 | "
+            "G0 X36 | G1 Z-22.7 F0.3 | G0 X38 Z-21.7 | G0 Z2 | G0 X60");
+}
+
+// Q-16 as a dialect choice: the textbook's step Δi/d (003:8930-8931). Offsets in diameter/Z:
+// 2·4·(3-k)/3 + 0.4 and 2·(3-k)/3 + 0.1 = (5.7333, 1.4333), (3.0667, 0.7667), (0.4, 0.1).
+TEST(CyclesSpec_9_Q16, PatternRepeatWithTheTextbookStep) {
+  CycleChoices book;
+  book.patternStepByPassCount = true;
+  EXPECT_EQ(contourCycle(60, 5, 0.25, {"G0 X30 Z2", "G1 Z-15 F0.1", "X50 Z-25", "X60"},
+                         "G73.7 U4 W2 R3", "G73.7 P50 Q80 U0.4 W0.1 F0.25", book),
+            "G0 X35.7333 Z3.4333 | G1 Z-13.5667 F0.25 | G1 X55.7333 Z-23.5667 F0.25 | "
+            "G1 X65.7333 F0.25 | G0 X60 Z5 | "
+            "G0 X33.0667 Z2.7667 | G1 Z-14.2333 F0.25 | G1 X53.0667 Z-24.2333 F0.25 | "
+            "G1 X63.0667 F0.25 | G0 X60 Z5 | "
+            "G0 X30.4 Z2.1 | G1 Z-14.9 F0.25 | G1 X50.4 Z-24.9 F0.25 | G1 X60.4 F0.25 | "
+            "G0 X60 Z5");
+}
+
 // §4.12 G74.7 peck drilling, TV-20: pecks of Q4 from Z3, retract e = 0.5, last clipped at -12.
 TEST(CyclesSpec_8_TV20, G74PeckDrillingWithoutX) {
   auto req = request(0, 3);
