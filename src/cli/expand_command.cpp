@@ -5,6 +5,7 @@
 #include "cli/execute.h"
 #include "dialects/nct/printer.h"
 #include "emit/canonical.h"
+#include "passes/cycles/kept_contours.h"
 #include "passes/macro/expander.h"
 
 namespace gcx::cli {
@@ -44,13 +45,16 @@ int expandToNct(Session& s, const ExpandOptions& opt, const machine::Setup& setu
   macro::Expander expander(library, interp, system, s.diags(), limits);
   expander.setPrintOutput(&printStream(opt.common, opt.output.empty()));
   if (opt.common.fanucVacantOrder) expander.setVacantOrder(macro::VacantOrder::Fanuc);
+  cycles::KeptContours contours(main->blocks, s.dialect().profile());
   expander.onFlatBlock([&](const ir::Block& b) {
-    ir::Block flat = b; // sequence numbers and comments do not survive expansion
-    flat.sequence.reset();
+    ir::Block flat = b; // comments and numbers do not survive, but those kept cycles refer to
+    if (flat.sequence && !contours.keepsNumber(*flat.sequence)) flat.sequence.reset();
     flat.comments.clear();
-    if (!flat.words.empty()) out.stream() << nct::printBlock(flat) << '\n';
+    if (flat.words.empty()) return;
+    contours.written(flat);
+    out.stream() << nct::printBlock(flat) << '\n';
   });
-  const bool ok = expander.run(*main);
+  const bool ok = expander.run(*main) && contours.check(s.diags());
   s.flushDiagnostics();
   if (!ok) return ProgramErrors;
   return out.commit() ? Ok : UsageError;

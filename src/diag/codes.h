@@ -114,5 +114,6 @@ inline constexpr const char* CycleContourDegenerate = "CYC-CONTOUR-DEGENERATE"; 
 inline constexpr const char* CycleParam = "CYC-PARAM";          // a bad cycle parameter
 inline constexpr const char* ThreadSpecification = "2021";      // G78.7/G76.7 lead <= 0
 inline constexpr const char* CycleThreadCss = "CYC-THREAD-CSS"; // warning: threading in G96
+inline constexpr const char* KeptContourLost = "GCX042"; // --keep cycles: a contour did not survive
 
 } // namespace gcx::diag::code
