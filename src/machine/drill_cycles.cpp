@@ -1,6 +1,7 @@
 // The interpreter's side of the drilling cycles (cycles.md §2-§3): which block drills, where
 // its holes are, and how the ops of passes/cycles/drilling.h become motion. What a cycle does
 // is the cycles library's; here are only the machine's positions, transforms and events.
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
@@ -151,6 +152,13 @@ bool Interpreter::runCycleOps(const std::vector<cycles::CycleOp>& ops, std::size
       const Kind kind = op.kind == OpKind::Rapid ? Kind::Rapid : Kind::Feed;
       emitLine(kind, toMachine(to), extraTo, feed, lead);
       program_ = to;
+      // after its last tap the spindle stays in position control, not turning (000:9969-9971)
+      if (op.kind == OpKind::RigidTap &&
+          std::none_of(ops.begin() + static_cast<std::ptrdiff_t>(k) + 1, ops.end(),
+                       [](const cycles::CycleOp& o) { return o.kind == OpKind::RigidTap; })) {
+        state_.spindleDirection = 0;
+        emitSpindle();
+      }
       break;
     }
     case OpKind::ArcCW:

@@ -232,7 +232,8 @@ TEST(CyclesSpec_8_TV15, G87VariantBBackBoring) { // §3.10
 
 // The motion trace has no RTAP: a rigid tap is a spindle-synchronised feed (G33, lead F/S)
 // with the spindle turning its way; M24 (close the position loop, N0823) moves nothing and is
-// not in the trace. The reverse direction shows as M4, the next tap's as M3 (§3.9 lowering).
+// not in the trace. The reverse direction shows as M4, the next tap's as M3 (§3.9 lowering),
+// and the spindle stands after the last tap, as in position control (000:9969-9971).
 TEST(CyclesSpec_8_TV16, G84_2RigidTapWithoutAndWithQ) {
   const auto h = run("N1 G17 G90 G94 G0 X0 Y0 Z20 S1000 M3\n"
                      "N2 G84.2 X10 Y10 Z-10 R3 F1500\n"
@@ -240,10 +241,11 @@ TEST(CyclesSpec_8_TV16, G84_2RigidTapWithoutAndWithQ) {
                      "N4 G80\n");
   const std::string in = " F1500 S1000 DIR=CW", out = " F1500 S1000 DIR=CCW";
   EXPECT_EQ(h.out.at("N2"),
-            "G0 X10 Y10 | G0 Z3 | RTAP Z-10" + in + " | M4 | RTAP Z3" + out + " | G0 Z20");
+            "G0 X10 Y10 | G0 Z3 | RTAP Z-10" + in + " | M4 | RTAP Z3" + out + " | M5 | G0 Z20");
   EXPECT_EQ(h.out.at("N3"), "G0 X30 | G0 Z3 | M3 | RTAP Z-2" + in + " | M4 | RTAP Z-1.5" + out +
                                 " | M3 | RTAP Z-7" + in + " | M4 | RTAP Z-6.5" + out +
-                                " | M3 | RTAP Z-10" + in + " | M4 | RTAP Z3" + out + " | G0 Z20");
+                                " | M3 | RTAP Z-10" + in + " | M4 | RTAP Z3" + out +
+                                " | M5 | G0 Z20");
 }
 
 TEST(CyclesSpec_8_TV30, ModalCarryOverG80AndGroup1Cancel) {
