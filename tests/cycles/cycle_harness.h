@@ -7,6 +7,7 @@
 // pass (it holds the program for the contour's blocks), the others stream.
 #pragma once
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 #include <map>
 #include <regex>
 #include <sstream>
@@ -147,5 +148,28 @@ private:
   double speed_ = 0;
   int direction_ = 0;
 };
+
+/// A cycle variable as programmed, without a location (for direct calls of the library).
+inline cycles::DrillWord val(double v, bool incremental = false) {
+  return cycles::DrillWord{v, incremental, {}};
+}
+
+/// Runs a program that must not fail (an error fails the test) under these drilling parameters.
+inline CycleHarness run(const std::string& program, cycles::DrillConfig config = {}) {
+  CycleHarness h;
+  h.config = config;
+  EXPECT_TRUE(h.run(program)) << h.error();
+  return h;
+}
+
+/// Runs a program that must fail; its first error as "label code line:col".
+inline std::string failing(const std::string& program, cycles::DrillConfig config = {},
+                           bool wIsAxis = false) {
+  CycleHarness h;
+  h.config = config;
+  h.wIsAxis = wIsAxis;
+  EXPECT_FALSE(h.run(program));
+  return h.error();
+}
 
 } // namespace gcx::test

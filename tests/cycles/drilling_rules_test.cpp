@@ -12,26 +12,7 @@ namespace gcx::test {
 namespace {
 
 using cycles::DrillCycle;
-using cycles::DrillWord;
 using cycles::OpKind;
-
-DrillWord val(double v, bool incremental = false) {
-  return DrillWord{v, incremental, {}};
-}
-
-CycleHarness run(const std::string& program, cycles::DrillConfig config = {}) {
-  CycleHarness h;
-  h.config = config;
-  EXPECT_TRUE(h.run(program)) << h.error();
-  return h;
-}
-
-std::string failing(const std::string& program, cycles::DrillConfig config = {}) {
-  CycleHarness h;
-  h.config = config;
-  EXPECT_FALSE(h.run(program));
-  return h.error();
-}
 
 // One G81-style request at X0 Y0 Z10 with r = 2, z = -7, F80.
 cycles::DrillRequest request(DrillCycle c) {

@@ -13,19 +13,6 @@ namespace gcx::test {
 namespace {
 
 using cycles::DrillCycle;
-using cycles::DrillWord;
-
-DrillWord val(double v, bool incremental = false) {
-  return DrillWord{v, incremental, {}};
-}
-
-// Runs a vector and returns the harness (the vector's blocks are in out).
-CycleHarness run(const std::string& program, cycles::DrillConfig config = {}) {
-  CycleHarness h;
-  h.config = config;
-  EXPECT_TRUE(h.run(program)) << h.error();
-  return h;
-}
 
 std::string repeat(const std::string& s, int n, const std::string& sep = " | ") {
   std::string out;
@@ -276,26 +263,23 @@ TEST(CyclesSpec_8_TV31, L0StoresWithoutDrilling) {
 
 // --- TV-32: error vectors (after `G17 G90 G0 X0 Y0 Z20`) -----------------------------------
 
-std::string failing(const std::string& blocks, cycles::DrillConfig config = {},
-                    bool wIsAxis = false) {
-  CycleHarness h;
-  h.config = config;
-  h.wIsAxis = wIsAxis;
-  EXPECT_FALSE(h.run("G17 G90 G0 X0 Y0 Z20\n" + blocks));
-  return h.error();
+// After `G17 G90 G0 X0 Y0 Z20`.
+std::string failingAfterStart(const std::string& blocks, cycles::DrillConfig config = {},
+                              bool wIsAxis = false) {
+  return failing("G17 G90 G0 X0 Y0 Z20\n" + blocks, config, wIsAxis);
 }
 
 TEST(CyclesSpec_8_TV32, E1NoZOrRIsError2053) {
-  EXPECT_EQ(failing("G81 X10 Y10 F100\n"), "#2 2053 2:1");
+  EXPECT_EQ(failingAfterStart("G81 X10 Y10 F100\n"), "#2 2053 2:1");
 }
 
 TEST(CyclesSpec_8_TV32, E2DrillingAxisChangedWithoutRIsError2053) {
-  EXPECT_EQ(failing("G81 X0 Y0 Z-5 R2 F100\nG18 X5\n"), "#3 2053 3:1");
+  EXPECT_EQ(failingAfterStart("G81 X0 Y0 Z-5 R2 F100\nG18 X5\n"), "#3 2053 3:1");
 }
 
 // The vector gives no F; F100 is added to the first block so that N2 can drill.
 TEST(CyclesSpec_8_TV32, E2bNewDrillingAxisWWithoutRIsError2053) {
-  EXPECT_EQ(failing("F100\nG0 Z200 W50\nG81 X0 Y0 Z50 R150\nX100 Y30 W20\n", {}, true),
+  EXPECT_EQ(failingAfterStart("F100\nG0 Z200 W50\nG81 X0 Y0 Z50 R150\nX100 Y30 W20\n", {}, true),
             "#5 2053 5:1");
 }
 
@@ -314,23 +298,23 @@ TEST(CyclesSpec_8_TV32, E2bWithRDrillsFromTheInitialLevelOfW) {
 TEST(CyclesSpec_8_TV32, E3G76WithoutOrientationIsError2137) {
   cycles::DrillConfig c;
   c.orient = false;
-  EXPECT_EQ(failing("G76 X10 Z-5 R2 F50\n", c), "#2 2137 2:1");
+  EXPECT_EQ(failingAfterStart("G76 X10 Z-5 R2 F50\n", c), "#2 2137 2:1");
 }
 
 TEST(CyclesSpec_8_TV32, E4RigidTapWithoutIndexingIsError2138) {
   cycles::DrillConfig c;
   c.indexable = false;
-  EXPECT_EQ(failing("G84.2 X10 Z-5 R2 F500 S500\n", c), "#2 2138 2:1");
+  EXPECT_EQ(failingAfterStart("G84.2 X10 Z-5 R2 F500 S500\n", c), "#2 2138 2:1");
 }
 
 TEST(CyclesSpec_8_TV32, E5G83WithoutQ) {
-  EXPECT_EQ(failing("G83 X10 Z-5 R2 F100\n"), "#2 CYC-Q-MISSING 2:1");
+  EXPECT_EQ(failingAfterStart("G83 X10 Z-5 R2 F100\n"), "#2 CYC-Q-MISSING 2:1");
 }
 
 // G7.1 itself is not executed yet, so a drilling cycle can never run inside it; the cycle's own
 // check (expandHole with cylindrical set) is in drilling_rules_test.
 TEST(CyclesSpec_8_TV32, E6DrillingInCylindricalInterpolation) {
-  EXPECT_EQ(failing("G17 X0 A0\nG7.1 A28.65\nG81 X0 Z-5 R2\n"), "#3 GCX030 3:1");
+  EXPECT_EQ(failingAfterStart("G17 X0 A0\nG7.1 A28.65\nG81 X0 Z-5 R2\n"), "#3 GCX030 3:1");
 }
 
 } // namespace

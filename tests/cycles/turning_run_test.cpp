@@ -10,18 +10,12 @@ namespace gcx::test {
 namespace {
 
 // X is a diameter axis in every vector (G10.9 X1); G33 prints its lead as F.
-CycleHarness run(const std::string& program) {
+CycleHarness runTurning(const std::string& program) {
   CycleHarness h;
   h.diameter = 1;
   h.threads = true;
   EXPECT_TRUE(h.run(program)) << h.error();
   return h;
-}
-
-std::string failing(const std::string& program) {
-  CycleHarness h;
-  EXPECT_FALSE(h.run(program));
-  return h.error();
 }
 
 constexpr const char* kTv17 = "N10 G10.9 X1\n"
@@ -38,7 +32,7 @@ constexpr const char* kTv17 = "N10 G10.9 X1\n"
                               "N110 G0 X100 Z50\n";
 
 TEST(CyclesSpec_8_TV17, G71RoughingThenG70FinishingOnTheInterpreter) {
-  const auto h = run(kTv17);
+  const auto h = runTurning(kTv17);
   EXPECT_EQ(h.out.count("N30"), 0u); // the first block only stores Δd and e
   EXPECT_EQ(h.out.at("N40"), "G0 X54 | G1 Z-39.9 F0.3 | G0 X56 Z-38.9 | G0 Z2 | "
                              "G0 X48 | G1 Z-28.7 F0.3 | G0 X50 Z-27.7 | G0 Z2 | "
@@ -57,16 +51,16 @@ TEST(CyclesSpec_8_TV17, G71RoughingThenG70FinishingOnTheInterpreter) {
 }
 
 TEST(CyclesSpec_8_TV18, G72FacingOnTheInterpreter) {
-  const auto h = run("N10 G10.9 X1\n"
-                     "N15 G18 G90 G95\n"
-                     "N20 G0 X62 Z2\n"
-                     "N30 G72.7 W2 R0.5\n"
-                     "N40 G72.7 P50 Q80 U0.2 W0.1 F0.25\n"
-                     "N50 G0 Z-6\n"
-                     "N60 G1 X40 F0.1\n"
-                     "N70 X20 Z-2\n"
-                     "N80 Z2\n"
-                     "N90 G0 X100\n");
+  const auto h = runTurning("N10 G10.9 X1\n"
+                            "N15 G18 G90 G95\n"
+                            "N20 G0 X62 Z2\n"
+                            "N30 G72.7 W2 R0.5\n"
+                            "N40 G72.7 P50 Q80 U0.2 W0.1 F0.25\n"
+                            "N50 G0 Z-6\n"
+                            "N60 G1 X40 F0.1\n"
+                            "N70 X20 Z-2\n"
+                            "N80 Z2\n"
+                            "N90 G0 X100\n");
   EXPECT_EQ(h.out.at("N40"), "G0 Z0 | G1 X20.2 F0.25 | G0 X21.2 Z0.5 | G0 X62 | "
                              "G0 Z-2 | G1 X20.7 F0.25 | G0 X21.7 Z-1.5 | G0 X62 | "
                              "G0 Z-4 | G1 X30.7 F0.25 | G0 X31.7 Z-3.5 | G0 X62 | "
@@ -77,16 +71,16 @@ TEST(CyclesSpec_8_TV18, G72FacingOnTheInterpreter) {
 }
 
 TEST(CyclesSpec_8_TV19, G73PatternRepeatOnTheInterpreter) {
-  const auto h = run("N10 G10.9 X1\n"
-                     "N15 G18 G90 G95\n"
-                     "N20 G0 X60 Z5\n"
-                     "N30 G73.7 U4 W2 R3\n"
-                     "N40 G73.7 P50 Q80 U0.4 W0.1 F0.25\n"
-                     "N50 G0 X30 Z2\n"
-                     "N60 G1 Z-15 F0.1\n"
-                     "N70 X50 Z-25\n"
-                     "N80 X60\n"
-                     "N90 G0 X100 Z50\n");
+  const auto h = runTurning("N10 G10.9 X1\n"
+                            "N15 G18 G90 G95\n"
+                            "N20 G0 X60 Z5\n"
+                            "N30 G73.7 U4 W2 R3\n"
+                            "N40 G73.7 P50 Q80 U0.4 W0.1 F0.25\n"
+                            "N50 G0 X30 Z2\n"
+                            "N60 G1 Z-15 F0.1\n"
+                            "N70 X50 Z-25\n"
+                            "N80 X60\n"
+                            "N90 G0 X100 Z50\n");
   EXPECT_EQ(h.out.at("N40"),
             "G0 X38.4 Z4.1 | G1 Z-12.9 F0.25 | G1 X58.4 Z-22.9 F0.25 | G1 X68.4 F0.25 | "
             "G0 X60 Z5 | "
@@ -98,31 +92,31 @@ TEST(CyclesSpec_8_TV19, G73PatternRepeatOnTheInterpreter) {
 }
 
 TEST(CyclesSpec_8_TV20, G74PeckDrillingOnTheInterpreter) {
-  const auto h = run("N10 G18 G90 G95\n"
-                     "N20 G0 X0 Z3 S600 M3\n"
-                     "N30 G74.7 R0.5\n"
-                     "N40 G74.7 Z-12 Q4 F0.1\n");
+  const auto h = runTurning("N10 G18 G90 G95\n"
+                            "N20 G0 X0 Z3 S600 M3\n"
+                            "N30 G74.7 R0.5\n"
+                            "N40 G74.7 Z-12 Q4 F0.1\n");
   EXPECT_EQ(h.out.at("N40"), "G1 Z-1 F0.1 | G0 Z-0.5 | G1 Z-5 F0.1 | G0 Z-4.5 | G1 Z-9 F0.1 | "
                              "G0 Z-8.5 | G1 Z-12 F0.1 | G0 Z3");
 }
 
 TEST(CyclesSpec_8_TV21, G75GroovingOnTheInterpreter) {
-  const auto h = run("N10 G10.9 X1\n"
-                     "N15 G18 G90 G95\n"
-                     "N20 G0 X32 Z-5 S500 M3\n"
-                     "N30 G75.7 R0.5\n"
-                     "N40 G75.7 X20 Z-10 P3 Q2.5 F0.05\n");
+  const auto h = runTurning("N10 G10.9 X1\n"
+                            "N15 G18 G90 G95\n"
+                            "N20 G0 X32 Z-5 S500 M3\n"
+                            "N30 G75.7 R0.5\n"
+                            "N40 G75.7 X20 Z-10 P3 Q2.5 F0.05\n");
   const std::string column = "G1 X26 F0.05 | G0 X27 | G1 X20 F0.05 | G0 X32";
   EXPECT_EQ(h.out.at("N40"),
             column + " | G0 Z-7.5 | " + column + " | G0 Z-10 | " + column + " | G0 Z-5");
 }
 
 TEST(CyclesSpec_8_TV22, G76ThreadingOnTheInterpreter) {
-  const auto h = run("N10 G10.9 X1\n"
-                     "N15 G18 G90 G95 G97 S500 M3\n"
-                     "N20 G0 X32 Z5\n"
-                     "N30 G76.7 P010060 Q0.1 R0.05\n"
-                     "N40 G76.7 X27.4 Z-20 P1.3 Q0.6 F2\n");
+  const auto h = runTurning("N10 G10.9 X1\n"
+                            "N15 G18 G90 G95 G97 S500 M3\n"
+                            "N20 G0 X32 Z5\n"
+                            "N30 G76.7 P010060 Q0.1 R0.05\n"
+                            "N40 G76.7 X27.4 Z-20 P1.3 Q0.6 F2\n");
   std::string expected;
   for (const char* start : {"X28.8 Z4.6536", "X28.3029 Z4.5101", "X27.9215 Z4.4", "X27.6 Z4.3072",
                             "X27.5 Z4.2783", "X27.4 Z4.2494"})
@@ -132,12 +126,12 @@ TEST(CyclesSpec_8_TV22, G76ThreadingOnTheInterpreter) {
 }
 
 TEST(CyclesSpec_8_TV23, G77ModalTurningCycleRepeats) { // 000:7221-7231, tool offsets left out
-  const auto h = run("N10 G10.9 X1\n"
-                     "N20 G18 G95 G0 X101 Z1 S400 M3\n"
-                     "N30 G77.7 X90 Z-30 R-3 F0.5\n"
-                     "N40 X80\n"
-                     "N50 X70\n"
-                     "N60 G0 X200 Z100\n");
+  const auto h = runTurning("N10 G10.9 X1\n"
+                            "N20 G18 G95 G0 X101 Z1 S400 M3\n"
+                            "N30 G77.7 X90 Z-30 R-3 F0.5\n"
+                            "N40 X80\n"
+                            "N50 X70\n"
+                            "N60 G0 X200 Z100\n");
   EXPECT_EQ(h.out.at("N30"), "G0 X84 | G1 X90 Z-30 F0.5 | G1 X101 F0.5 | G0 Z1");
   EXPECT_EQ(h.out.at("N40"), "G0 X74 | G1 X80 Z-30 F0.5 | G1 X101 F0.5 | G0 Z1");
   EXPECT_EQ(h.out.at("N50"), "G0 X64 | G1 X70 Z-30 F0.5 | G1 X101 F0.5 | G0 Z1");
@@ -145,24 +139,24 @@ TEST(CyclesSpec_8_TV23, G77ModalTurningCycleRepeats) { // 000:7221-7231, tool of
 }
 
 TEST(CyclesSpec_8_TV24, G78ThreadCycleRepeats) {
-  const auto h = run("N10 G10.9 X1\n"
-                     "N15 G18 G90 G95 G97 S500 M3\n"
-                     "N20 G0 X32 Z5\n"
-                     "N30 G78.7 X29.2 Z-20 F2\n"
-                     "N40 X28.6\n"
-                     "N50 G0 X50\n");
+  const auto h = runTurning("N10 G10.9 X1\n"
+                            "N15 G18 G90 G95 G97 S500 M3\n"
+                            "N20 G0 X32 Z5\n"
+                            "N30 G78.7 X29.2 Z-20 F2\n"
+                            "N40 X28.6\n"
+                            "N50 G0 X50\n");
   EXPECT_EQ(h.out.at("N30"), "G0 X29.2 | G33 Z-20 F2 | G0 X32 | G0 Z5");
   EXPECT_EQ(h.out.at("N40"), "G0 X28.6 | G33 Z-20 F2 | G0 X32 | G0 Z5");
   EXPECT_EQ(h.out.at("N50"), "G0 X50");
 }
 
 TEST(CyclesSpec_8_TV25, G79FacingCycleRepeats) {
-  const auto h = run("N10 G10.9 X1\n"
-                     "N15 G18 G90 G95\n"
-                     "N20 G0 X52 Z2\n"
-                     "N30 G79.7 X20 Z-2 F0.2\n"
-                     "N40 Z-4\n"
-                     "N50 G0 X60 Z10\n");
+  const auto h = runTurning("N10 G10.9 X1\n"
+                            "N15 G18 G90 G95\n"
+                            "N20 G0 X52 Z2\n"
+                            "N30 G79.7 X20 Z-2 F0.2\n"
+                            "N40 Z-4\n"
+                            "N50 G0 X60 Z10\n");
   EXPECT_EQ(h.out.at("N30"), "G0 Z-2 | G1 X20 F0.2 | G1 Z2 F0.2 | G0 X52");
   EXPECT_EQ(h.out.at("N40"), "G0 Z-4 | G1 X20 F0.2 | G1 Z2 F0.2 | G0 X52");
   EXPECT_EQ(h.out.at("N50"), "G0 X60 Z10");
@@ -195,15 +189,15 @@ TEST(CyclesSpec_4_7, G70WithoutQIsPQNotFound) {
 // from (z-10, x10) to (z-20, x20) with R10 turns about (z-10, x20); level x15 meets it where
 // (z+10)² = 10² - 5², at z = -10 - 8.6603.
 TEST(CyclesSpec_4_8, ContourWithIncrementalWordsAndAnArc) {
-  const auto h = run("N10 G10.9 X1\n"
-                     "N15 G18 G90 G95\n"
-                     "N20 G0 X50 Z2\n"
-                     "N30 G71.7 U5 R1\n"
-                     "N40 G71.7 P50 Q80 U0 W0 F0.2\n"
-                     "N50 G0 X20\n"
-                     "N60 G1 W-12 F0.1\n"
-                     "N70 G2 X40 W-10 R10\n"
-                     "N80 G1 X50\n");
+  const auto h = runTurning("N10 G10.9 X1\n"
+                            "N15 G18 G90 G95\n"
+                            "N20 G0 X50 Z2\n"
+                            "N30 G71.7 U5 R1\n"
+                            "N40 G71.7 P50 Q80 U0 W0 F0.2\n"
+                            "N50 G0 X20\n"
+                            "N60 G1 W-12 F0.1\n"
+                            "N70 G2 X40 W-10 R10\n"
+                            "N80 G1 X50\n");
   EXPECT_EQ(h.out.at("N40"), "G0 X40 | G1 Z-20 F0.2 | G0 X42 Z-19 | G0 Z2 | "
                              "G0 X30 | G1 Z-18.6603 F0.2 | G0 X32 Z-17.6603 | G0 Z2 | "
                              "G0 X20 | G1 Z-10 F0.2 | G2 X40 Z-20 R10 F0.2 | G1 X50 F0.2 | "
