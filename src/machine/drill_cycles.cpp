@@ -132,12 +132,7 @@ bool Interpreter::runCycleOps(const std::vector<cycles::CycleOp>& ops, std::size
         extraTo[drillSlot] = to[n];
         to[n] = program_[n];
       }
-      double lead = 0;
-      double feed = op.feed;
-      if (op.kind == OpKind::Thread) { // G33: F follows the lead and the spindle speed
-        lead = op.value;
-        feed = state_.perRevolution ? lead : lead * state_.spindleSpeed;
-      }
+      double lead = op.kind == OpKind::Thread ? op.value : 0; // G33: the lead per revolution
       if (op.kind == OpKind::RigidTap) {
         if (op.direction != state_.spindleDirection) {
           state_.spindleDirection = op.direction;
@@ -150,7 +145,7 @@ bool Interpreter::runCycleOps(const std::vector<cycles::CycleOp>& ops, std::size
         lead = state_.perRevolution ? op.feed : op.feed / state_.spindleSpeed;
       }
       const Kind kind = op.kind == OpKind::Rapid ? Kind::Rapid : Kind::Feed;
-      emitLine(kind, toMachine(to), extraTo, feed, lead);
+      emitLine(kind, toMachine(to), extraTo, op.feed, lead);
       program_ = to;
       // after its last tap the spindle stays in position control, not turning (000:9969-9971)
       if (op.kind == OpKind::RigidTap &&

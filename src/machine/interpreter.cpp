@@ -145,9 +145,9 @@ void Interpreter::emitLine(Kind kind, const Vec3& to, const motion::Extra& extra
   e.extraStart = extra_;
   e.extraEnd = extraTo;
   extra_ = extraTo;
-  e.feed = feed;
+  e.feed = lead > 0 ? lead : feed; // a synchronised move feeds its lead per revolution
   e.lead = lead;
-  e.perRevolution = state_.perRevolution;
+  e.perRevolution = lead > 0 || state_.perRevolution;
   machine_ = to;
   emit(std::move(e));
 }

@@ -67,7 +67,9 @@ struct Event {
 
   // feed and other values
   double feed = 0; // mm/min, or mm/rev when perRevolution
-  double lead = 0; // Feed: > 0 when spindle-synchronised (G33 thread, rigid tap): mm per rev
+  /// Feed: > 0 when spindle-synchronised (G33 thread, rigid tap): mm per revolution; such a
+  /// feed is `lead` per revolution (feed = lead, perRevolution set).
+  double lead = 0;
   bool perRevolution = false; // G95 feed, or G4 in revolutions
   double value = 0;      // Dwell time, Spindle speed (emitted whenever S or the direction changes),
                          // ToolChange tool, Coolant code, UnitsChange / FeedModeChange code

@@ -238,10 +238,22 @@ void CanonReader::call(const CanonCall& c, std::string_view text) {
     if (e.kind == Kind::Feed) {
       e.feed = synced_ ? syncPitch_ : feed_;
       e.perRevolution = synced_ || perRev_;
+      e.lead = synced_ ? syncPitch_ : 0;
       if (inverseTime_ && !synced_) note(c.line, text, "inverse-time feed (G93) not converted");
     }
     pos_ = e.end;
     push(std::move(e));
+  } else if (n == "RIGID_TAP") { // (x, y, z[, scale]): G33.1 in to the point and back out
+    if (!numbers(c, 3, v, text)) return;
+    const Vec3 from = pos_;
+    for (const Vec3& to : {toMachine(Vec3(v[0], v[1], v[2])), from}) {
+      Event e = make(Kind::Feed, c.line);
+      e.end = to;
+      e.feed = e.lead = syncPitch_;
+      e.perRevolution = true;
+      pos_ = e.end;
+      push(std::move(e));
+    }
   } else if (n == "ARC_FEED") { // (e1, e2, c1, c2, rot, e3, a, b, c)
     if (!numbers(c, c.args.size() >= 9 ? 9 : 6, v, text)) return;
     const double e1 = v[0], e2 = v[1], c1 = v[2] * unit_, c2 = v[3] * unit_, e3 = v[5];
@@ -392,7 +404,7 @@ void CanonReader::call(const CanonCall& c, std::string_view text) {
   } else if (n == "STRAIGHT_PROBE") {
     note(c.line, text, "probe move not modelled (position set to its target)");
     if (numbers(c, 3, v, text)) pos_ = toMachine(Vec3(v[0], v[1], v[2]));
-  } else if (n == "RIGID_TAP" || n == "NURBS_FEED" || n == "SPLINE_FEED") {
+  } else if (n == "NURBS_FEED" || n == "SPLINE_FEED") {
     note(c.line, text, "motion not modelled");
   }
   // Everything else (other comments, ON_RESET, SET_FEED_REFERENCE, SET_MOTION_CONTROL_MODE,

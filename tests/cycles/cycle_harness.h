@@ -102,7 +102,8 @@ private:
         s += " F" + n4(e.lead);
         break;
       }
-      if (e.kind == motion::Kind::Feed) s += " F" + n4(e.feed);
+      // a tap prints the F of a G94 program: its lead times the spindle speed
+      if (e.kind == motion::Kind::Feed) s += " F" + n4(e.lead > 0 ? e.lead * speed_ : e.feed);
       if (e.lead > 0) s += fmt::format(" S{} DIR={}", n4(speed_), direction_ > 0 ? "CW" : "CCW");
       break;
     case motion::Kind::Arc:
