@@ -162,6 +162,15 @@ TEST(CyclesSpec_8_TV25, G79FacingCycleRepeats) {
   EXPECT_EQ(h.out.at("N50"), "G0 X60 Z10");
 }
 
+// TV-26 (000:10464-10531), the manual's own example in G19: it parses (a); its first contour
+// rounds a corner with `,R5`, chapter-17 geometry gcx does not execute yet, so the run stops
+// there with a located error instead of cutting a contour without the rounding.
+TEST(CyclesSpec_8_TV26, ManualExampleParsesAndStopsAtTheCornerRounding) {
+  const std::string program =
+      readFile(sourceDir() / "tests/corpus/nct/spec/cycles-s8-tv26/O0001.nct");
+  EXPECT_EQ(failing(program), "N140 GCX030 14:10");
+}
+
 // --- §7 errors the interpreter owns -------------------------------------------------------
 
 TEST(CyclesSpec_8_TV32, E7MissingContourBlockIsPQNotFound) {
