@@ -140,7 +140,9 @@ cycles::TurningWords Interpreter::turningWords(cycles::TurningCycle cycle,
   t.plane = state_.plane;
   t.diameter = state_.diameterAxes;
   t.range = blockRange_;
-  const bool run = (w.p && w.q) || w.hasAxisWord(); // not a first block of a two-block format
+  // not a first block of a two-block format: G71.7-G73.7 run with P and Q (their first block
+  // has U/W words too), G74.7-G76.7 with an axis word
+  const bool run = cycle <= cycles::TurningCycle::G73 ? (w.p && w.q) : w.hasAxisWord();
   auto put = [&](char letter, const ir::Word* x, bool length, bool axis) {
     if (!x) return;
     const bool incremental = axis && (state_.incremental || x->incremental);

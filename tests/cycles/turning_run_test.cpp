@@ -91,6 +91,26 @@ TEST(CyclesSpec_8_TV19, G73PatternRepeatOnTheInterpreter) {
   EXPECT_EQ(h.out.at("N90"), "G0 X100 Z50");
 }
 
+// In G20 the lengths convert to mm, the pass count R3 of the first block does not.
+TEST(CyclesSpec_4_10, G73PassCountIsNotConvertedFromInch) {
+  const auto h = runTurning("N10 G10.9 X1\n"
+                            "N15 G18 G20 G90 G95\n"
+                            "N20 G0 X6 Z0.5\n"
+                            "N30 G73.7 U0.4 W0.2 R3\n"
+                            "N40 G73.7 P50 Q80 U0.04 W0.01 F0.01\n"
+                            "N50 G0 X3 Z0.2\n"
+                            "N60 G1 Z-1.5\n"
+                            "N70 X5 Z-2.5\n"
+                            "N80 X6\n");
+  const std::string& out = h.out.at("N40");
+  std::size_t passes = 0;
+  for (std::size_t at = out.find("G0 X152.4 Z12.7"); at != std::string::npos;
+       at = out.find("G0 X152.4 Z12.7", at + 1))
+    ++passes; // each pass ends with the rapid back to A (6 in, 0.5 in)
+  EXPECT_EQ(passes, 3u) << out;
+  EXPECT_EQ(out.substr(0, out.find(" |")), "G0 X97.536 Z10.414"); // (3+0.8+0.04) in, 0.41 in
+}
+
 TEST(CyclesSpec_8_TV20, G74PeckDrillingOnTheInterpreter) {
   const auto h = runTurning("N10 G18 G90 G95\n"
                             "N20 G0 X0 Z3 S600 M3\n"
