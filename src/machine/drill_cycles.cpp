@@ -33,6 +33,9 @@ void Interpreter::cancelCycleMode() {
 }
 
 bool Interpreter::drillBlock(const BlockWords& w, bool consumedAxes) {
+  // G4, G10, G92, G28... used the block's words for themselves: no hole, nothing stored (their
+  // P and R are not the cycle's, 000:10334-10336)
+  if (consumedAxes) return afterMotion(w);
   const motion::PlaneAxes ax = motion::axesOf(state_.plane);
   const int n = ax.normal;
   // A parallel axis (W in G17, N0103) programmed in the block becomes the drilling axis
@@ -53,13 +56,9 @@ bool Interpreter::drillBlock(const BlockWords& w, bool consumedAxes) {
       dw.code = cycles::drillCycleFromCode10(w.gCodes[i]->code10);
   dw.axis = slot;
   dw.axisPosition = slotValue(slot);
-  dw.holeWord = !consumedAxes && w.hasAxisWord();
-  if (!consumedAxes) {
-    const ir::Word* z = slot >= 3 ? parallelWord : (w.axis[n] ? w.axis[n] : w.uvw[n]);
-    if (z)
-      dw.vars.z =
-          drillWord(z, mm(z->number), state_.incremental || z->incremental || z == w.uvw[n]);
-  }
+  dw.holeWord = w.hasAxisWord();
+  if (const ir::Word* z = slot >= 3 ? parallelWord : (w.axis[n] ? w.axis[n] : w.uvw[n]))
+    dw.vars.z = drillWord(z, mm(z->number), state_.incremental || z->incremental || z == w.uvw[n]);
   dw.vars.r =
       drillWord(w.r, w.r ? mm(w.r->number) : 0, w.r && (state_.incremental || w.r->incremental));
   dw.vars.q = drillWord(w.q, w.q ? mm(w.q->number) : 0, false);

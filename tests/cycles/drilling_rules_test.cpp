@@ -86,6 +86,15 @@ TEST(CyclesSpec_2_5, ROnlyIsStoredQAndPOnlyInDrillingBlocks) { // Q-4, 000:10338
   EXPECT_EQ(h.out.at("N5"), "G0 X20 | G0 Z3 | G1 Z-5 F100 | G4 P1 | G0 Z30");
 }
 
+// A G10 record in cycle mode writes its register; its R is not the cycle's R (§2.5).
+TEST(CyclesSpec_2_5, WordsOfG10AreNotCycleData) {
+  const auto h = run("G17 G90 G0 Z20\n"
+                     "G81 X5 Z-5 R2 F100\n"
+                     "G10 L10 P1 R50\n"
+                     "X10\n");
+  EXPECT_EQ(h.out.at("#4"), "G0 X10 | G0 Z2 | G1 Z-5 F100 | G0 Z20");
+}
+
 TEST(CyclesSpec_2_5, DrillingAxisWordAloneDrillsInPlace) {
   const auto h = run("N1 G17 G90 G0 X0 Y0 Z30\n"
                      "N2 G99 G81 X10 Z-5 R2 F100\n"
