@@ -225,9 +225,8 @@ bool Interpreter::finishingCycle(const BlockWords& w) {
   const SourceRange callRange = blockRange_;
   const std::string what = fmt::format("G70.7 P{} Q{}", emit::formatNumber(w.p->number),
                                        emit::formatNumber(w.q->number));
-  for (ContourBlock& c : blocks) { // as ordinary blocks, with their own F S T (§4.11)
-    motion::Provenance from = c.from;
-    from.chain.insert(from.chain.begin(), caller.chain.begin(), caller.chain.end());
+  for (ContourBlock& c : blocks) {    // as ordinary blocks, with their own F S T (§4.11)
+    motion::Provenance from = c.from; // its chain is the caller's: the contour is in its program
     from.chain.push_back({callRange.begin, what});
     if (!execute(c.block, from)) return false;
   }

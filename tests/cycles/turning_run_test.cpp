@@ -2,6 +2,7 @@
 // by N number, resolved by the engine itself, the cycle's passes, execution resuming after the
 // contour, G70.7 running the blocks, the modal G77.7-G79.7 repeating, and the errors the
 // interpreter owns (§7: CYC-PQ-NOTFOUND, CYC-CONTOUR-CMD).
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include "cycles/cycle_harness.h"
@@ -189,6 +190,24 @@ TEST(CyclesSpec_8_TV26, ManualExampleParsesAndStopsAtTheCornerRounding) {
   const std::string program =
       readFile(sourceDir() / "tests/corpus/nct/spec/cycles-s8-tv26/O0001.nct");
   EXPECT_EQ(failing(program), "N140 GCX030 14:10");
+}
+
+// §4.11 inside a subprogram: a contour block's motion names the G70.7 and the call, once each.
+TEST(CyclesSpec_4_11, G70ProvenanceNamesTheCycleAndTheCallOnce) {
+  const MacroRun r = runMacro({{"O0001.nct", "G10.9 X1\nG18 G90 G95 G0 X60 Z2\nM98 P2\nM30\n"},
+                               {"O0002.nct", "N10 G70.7 P50 Q60\nM99\nN50 G0 X30\n"
+                                             "N60 G1 Z-20 F0.15\n"}},
+                              "O0001.nct");
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  const auto feed = std::find_if(r.events.begin(), r.events.end(), [](const motion::Event& e) {
+    return e.kind == motion::Kind::Feed;
+  });
+  ASSERT_NE(feed, r.events.end());
+  EXPECT_EQ(feed->from.at.line, 4u);
+  ASSERT_EQ(feed->from.chain.size(), 2u);
+  EXPECT_EQ(feed->from.chain[0].what, "O0002 (M98 P2)");
+  EXPECT_EQ(feed->from.chain[1].what, "G70.7 P50 Q60");
+  EXPECT_EQ(feed->from.chain[1].call.line, 1u);
 }
 
 // --- §7 errors the interpreter owns -------------------------------------------------------
