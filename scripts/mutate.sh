@@ -124,6 +124,14 @@ run_suite() { # 0 when every test passes
     (cd "$build" && timeout "$limit" ctest -R '^cli\.' --stop-on-failure --output-on-failure)
 }
 
+killer() { # the first test that failed, from a mutation's log
+  local t
+  t=$(grep -m1 -oE '^\[  FAILED  \] [A-Za-z0-9_./]+' "$1" | cut -c14-)
+  [[ -z $t ]] && t=$(grep -m1 -oE 'cli\.[A-Za-z0-9_]+ \.+\**(Failed|Timeout)' "$1" | cut -d' ' -f1)
+  [[ -z $t ]] && grep -q '^suite timed out' "$1" && t="a timeout (${limit}s)"
+  echo "${t:-a crash}"
+}
+
 start=$(date +%s)
 killed=0 survived=0 equivalent=0 stale=0 broken=0 total=0
 for i in "${!ids[@]}"; do
@@ -142,11 +150,14 @@ for i in "${!ids[@]}"; do
     backup=$(mktemp)
     cp -p "$file" "$backup"
     apply "$file" "${finds[$i]}" "${replaces[$i]}"
-    if ! cmake --build "$build" -j "$jobs" --target gcx gcx_tests >"$log/$id.txt" 2>&1; then
-      result=BUILD-FAILED
-      broken=$((broken + 1))
-    elif run_suite >>"$log/$id.txt" 2>&1; then
-      if [[ -n ${equivs[$i]} ]]; then
+    if cmake --build "$build" -j "$jobs" --target gcx gcx_tests >"$log/$id.txt" 2>&1; then
+      run_suite >>"$log/$id.txt" 2>&1
+      rc=$?
+      ((rc == 124)) && echo "suite timed out" >>"$log/$id.txt"
+      if ((rc != 0)); then
+        result=KILLED
+        killed=$((killed + 1))
+      elif [[ -n ${equivs[$i]} ]]; then
         result=EQUIVALENT
         equivalent=$((equivalent + 1))
       else
@@ -154,12 +165,13 @@ for i in "${!ids[@]}"; do
         survived=$((survived + 1))
       fi
     else
-      result=KILLED
-      killed=$((killed + 1))
+      result=BUILD-FAILED
+      broken=$((broken + 1))
     fi
     restore
   fi
   note=${whys[$i]}
+  [[ $result == KILLED ]] && note="by $(killer "$log/$id.txt")"
   [[ $result == EQUIVALENT ]] && note="equivalent: ${equivs[$i]}"
   [[ $result == KILLED && -n ${equivs[$i]} ]] && note="KILLED but listed as equivalent: fix the list"
   printf '%-6s %-12s %4ss  %s  %s\n' "$id" "$result" $(($(date +%s) - t0)) "$file" "$note"
