@@ -6,7 +6,7 @@ APT_PACKAGES := antlr4 libantlr4-runtime-dev libeigen3-dev libfmt-dev libcli11-d
   cmake g++ make time
 ORACLE_PACKAGES := linuxcnc-uspace
 
-.PHONY: deps build demo test bench format clean
+.PHONY: deps build demo test bench mutate format clean
 
 deps:
 	@scripts/install-deps.sh $(APT_PACKAGES) -- $(ORACLE_PACKAGES)
@@ -35,6 +35,11 @@ test: build
 
 bench: build
 	bench/run.sh $(BUILD)
+
+# Mutation testing (slow, not part of `make test`): scripts/mutations.txt, docs/testing.md.
+# `make mutate IDS="M01 X02"` runs only the mutations named.
+mutate: deps
+	scripts/mutate.sh $(IDS)
 
 format:
 	clang-format -i $$(git ls-files '*.cpp' '*.h')

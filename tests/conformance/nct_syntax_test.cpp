@@ -46,6 +46,10 @@ TEST(NctSpec_1_2, PlusSignIsDiscardedAndBlanksInsideWordsIgnored) {
   EXPECT_EQ(printed("G1 X+5 Y - 40 Z 1.5"), "G1 X5 Y-40 Z1.5");
 }
 
+TEST(NctSpec_1_2, MinusZeroPrintsAsZero) {
+  EXPECT_EQ(printed("G1 X-0 Y-0.0 Z-0.5"), "G1 X0 Y0 Z-0.5");
+}
+
 TEST(NctSpec_1_2, WordsMayBeWrittenWithoutBlanks) {
   EXPECT_EQ(printed("G2X10Y0I20J-10"), "G2 X10 Y0 I20 J-10");
 }

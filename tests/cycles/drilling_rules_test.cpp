@@ -67,6 +67,24 @@ TEST(CyclesSpec_2_3, G98IsRestoredWhenCycleModeEnds) {
   EXPECT_EQ(h.out.at("N4"), "G0 X20 | G0 Z1 | G1 Z-5 F100 | G0 Z2"); // ini 2: where N4 starts
 }
 
+TEST(CyclesSpec_2_3, BottomAboveRDrillsUpward) {
+  // s = sign(z - r) = +1: the pecks L_k = r + s*min(kQ, D) climb from R-10 to Z10 (D 20, Q 8,
+  // n = 3), each G73 retract d = 0.5 (N1500) goes back down; G98 returns to ini -20
+  const auto h = run("N1 G17 G90 G0 X0 Y0 Z-20\n"
+                     "N2 G73 X5 Y0 Z10 R-10 Q8 F100\n");
+  EXPECT_EQ(h.out.at("N2"), "G0 X5 | G0 Z-10 | G1 Z-2 F100 | G0 Z-2.5 | G1 Z6 F100 | G0 Z5.5 | "
+                            "G1 Z10 F100 | G0 Z-20");
+}
+
+TEST(CyclesSpec_3_2, DepthThatIsAMultipleOfQNeedsNoExtraPeck) {
+  // G18 drills along Y: D = 12, Q = 4, n = ceil(12/4) = 3 pecks to -2, -6, -10; G83 goes back
+  // to R after each but the last and returns to c = 1 (N1501) above the previous level
+  const auto h = run("N1 G18 G90 G0 X0 Y20 Z0\n"
+                     "N2 G83 Z5 X5 Y-10 R2 Q4 F100\n");
+  EXPECT_EQ(h.out.at("N2"), "G0 X5 Z5 | G0 Y2 | G1 Y-2 F100 | G0 Y2 | G0 Y-1 | G1 Y-6 F100 | "
+                            "G0 Y2 | G0 Y-5 | G1 Y-10 F100 | G0 Y20");
+}
+
 TEST(CyclesSpec_2_3, IncrementalZFollowsTheStoredR) { // Z kept as programmed, resolved per hole
   const auto h = run("N1 G17 G90 G0 X0 Y0 Z30\n"
                      "N2 G99 G81 X10 ZI-5 R2 F100\n"

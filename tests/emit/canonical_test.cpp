@@ -47,6 +47,19 @@ TEST(Canonical, ThreeAxisProgramsHaveNoExtraWords) {
             "G3 X0 Y10 Z0 I-10 J0 F200\n");
 }
 
+// nct.md §3.5 TV7: `G2 I50 Z-20 L4` from (-50, 0, 0) is four full turns; RS274's P counts the
+// turns, the first included (docs/canonical.md)
+TEST(Canonical, TurnsOfAHelixAreP) {
+  EXPECT_EQ(emit({arc(Plane::XY, {-50, 0, 0}, {-50, 0, -20}, {0, 0, 0}, true, 3, 100)}),
+            "G2 X-50 Y0 Z-20 I50 J0 P4 F100\n");
+  EXPECT_EQ(emit({arc(Plane::XY, {10, 0, 0}, {0, 10, 0}, {0, 0, 0}, false, 1, 100)}),
+            "G3 X0 Y10 Z0 I-10 J0 P2 F100\n");
+}
+
+TEST(Canonical, NoNegativeZero) {
+  EXPECT_EQ(emit({rapid({0, 0, 0}, {-0.0, 10, -0.0})}), "G0 X0 Y10 Z0\n");
+}
+
 TEST(Canonical, RotaryWordsFromTheFirstRotaryMoveOn) {
   const Extra a0 = Extra::Zero(), a90 = extra(90, 0, 0), c45 = extra(90, 0, 45);
   EXPECT_EQ(emit({rapid({0, 0, 0}, {10, 0, 0}),

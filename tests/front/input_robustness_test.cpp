@@ -34,6 +34,15 @@ TEST(InputRobustness, InvalidUtf8IsLocated) {
   EXPECT_EQ(p.errors(), std::vector<std::string>{"2:10 GCX004"});
 }
 
+TEST(InputRobustness, CrOfACrLfIsNotPartOfTheBlock) {
+  // nct.md §1.1: CR LF ends a line like LF; the block's range (diagnostics, --json) stops
+  // before the CR
+  Parsed p = parseNct("G2 X10 Y10 F100\r\nM30\r\n");
+  ASSERT_EQ(p.blocks.size(), 2u);
+  EXPECT_EQ(p.blocks[0].range.length, 15u);
+  EXPECT_EQ(p.blocks[1].range.length, 3u);
+}
+
 TEST(InputRobustness, Utf8InCommentsIsAccepted) {
   Parsed p = parseNct("G0 X1 (\xD1\x84\xD1\x80\xD0\xB5\xD0\xB7\xD0\xB0)\nM30\n");
   EXPECT_TRUE(p.errors().empty()) << p.rendered();

@@ -41,6 +41,26 @@ void parse(Loaded& l, const std::string& text) {
   l.setup = machine::parseSetup(text, l.sources.addBuffer("setup.json", text), l.diags);
 }
 
+// The key ranges at their edges: G54..G59, G54.1 P1..P99, tools 0..999, bits 0..7.
+TEST(Setup, KeysAtTheEdgesOfTheirRanges) {
+  Loaded ok;
+  parse(ok, R"({"work_offsets": {"G59": [1, 2, 3], "G54.1 P99": [4, 5, 6], "G54.1 P1": [7, 8, 9]},
+"tools": {"999": {"length": 9}}, "parameters": {"N1300.7": 1, "N1300.0": 1}})");
+  ASSERT_TRUE(ok.setup) << ok.rendered();
+  EXPECT_EQ(ok.setup->workOffset("G59"), (Xyz{1, 2, 3}));
+  EXPECT_EQ(ok.setup->workOffset("G54.1 P99"), (Xyz{4, 5, 6}));
+  EXPECT_EQ(ok.setup->tools.at(999).length, 9);
+  EXPECT_EQ(ok.setup->parameter("N1300.7", 0), 1);
+  Loaded past;
+  parse(past,
+        R"({"work_offsets": {"G53": [1, 2, 3], "G54.1 P100": [4, 5, 6], "G54.1 P0": [7, 8, 9]},
+"tools": {"1000": {}}, "parameters": {"N1300.8": 1}})");
+  EXPECT_FALSE(past.setup);
+  EXPECT_EQ(past.errors(), (std::vector<std::string>{"1:19 GCX023", "1:37 GCX023", "1:62 GCX023",
+                                                     "2:11 GCX023", "2:39 GCX023"}))
+      << past.rendered();
+}
+
 TEST(Setup, ValidFileGivesExactValues) {
   Loaded l;
   parse(l, R"({

@@ -1,4 +1,5 @@
-# Runs `GCX CMD FILE [ARGS]` and checks the exit code and a piece of standard error.
+# Runs `GCX CMD FILE [ARGS]` and checks the exit code, a piece of standard error and one it
+# must not have.
 execute_process(COMMAND ${GCX} ${CMD} ${FILE} ${ARGS} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL EXPECT_EXIT)
   message(FATAL_ERROR "exit code ${rc}, expected ${EXPECT_EXIT}\nstdout: ${out}\nstderr: ${err}")
@@ -7,5 +8,11 @@ if(DEFINED EXPECT_STDERR)
   string(FIND "${err}" "${EXPECT_STDERR}" pos)
   if(pos EQUAL -1)
     message(FATAL_ERROR "stderr lacks '${EXPECT_STDERR}':\n${err}")
+  endif()
+endif()
+if(DEFINED EXPECT_NO_STDERR)
+  string(FIND "${err}" "${EXPECT_NO_STDERR}" pos)
+  if(NOT pos EQUAL -1)
+    message(FATAL_ERROR "stderr has '${EXPECT_NO_STDERR}':\n${err}")
   endif()
 endif()

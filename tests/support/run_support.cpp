@@ -152,9 +152,10 @@ ProgramRun runNct(const std::string& text, const machine::Setup& setup, motion::
 
 namespace gcx::test {
 
-MacroRun runMacro(const std::map<std::string, std::string>& files, const std::string& main,
-                  const std::vector<int>& watch, const machine::Setup& setup,
-                  std::uint64_t maxJumps, const std::vector<std::string>& libraryDirs) {
+namespace {
+MacroRun runMacroUnder(const std::map<std::string, std::string>& files, const std::string& main,
+                       const std::vector<int>& watch, const machine::Setup& setup,
+                       const macro::Limits& limits, const std::vector<std::string>& libraryDirs) {
   static int counter = 0;
   const fs::path dir =
       fs::temp_directory_path() / fmt::format("gcx-macro-{}-{}", ::getpid(), ++counter);
@@ -176,8 +177,6 @@ MacroRun runMacro(const std::map<std::string, std::string>& files, const std::st
   if (const macro::LoadedProgram* prog = library.load((dir / main).string())) {
     machine::Interpreter interp(nct::profile(), setup, sink, diags);
     macro::SystemVariables system(interp, diags);
-    macro::Limits limits;
-    limits.maxJumps = maxJumps;
     macro::Expander expander(library, interp, system, diags, limits);
     expander.setPrintOutput(&printed);
     expander.run(*prog);
@@ -195,6 +194,20 @@ MacroRun runMacro(const std::map<std::string, std::string>& files, const std::st
   }
   fs::remove_all(dir);
   return run;
+}
+} // namespace
+
+MacroRun runMacro(const std::map<std::string, std::string>& files, const std::string& main,
+                  const std::vector<int>& watch, const machine::Setup& setup,
+                  std::uint64_t maxJumps, const std::vector<std::string>& libraryDirs) {
+  macro::Limits limits;
+  limits.maxJumps = maxJumps;
+  return runMacroUnder(files, main, watch, setup, limits, libraryDirs);
+}
+
+MacroRun runMacroLimited(const std::map<std::string, std::string>& files, const std::string& main,
+                         const macro::Limits& limits) {
+  return runMacroUnder(files, main, {}, {}, limits, {});
 }
 
 } // namespace gcx::test

@@ -35,6 +35,10 @@ std::string n4(double v);
 
 #include "passes/macro/value.h"
 
+namespace gcx::macro {
+struct Limits;
+}
+
 namespace gcx::test {
 
 /// A macro program run through the expansion pass: files (name -> text) are written to a fresh
@@ -48,5 +52,8 @@ MacroRun runMacro(const std::map<std::string, std::string>& files, const std::st
                   const std::vector<int>& watch = {}, const machine::Setup& setup = {},
                   std::uint64_t maxJumps = 100000,
                   const std::vector<std::string>& libraryDirs = {});
+/// The same under the given limits on jumps, blocks and call depth (`--max-jumps` ...).
+MacroRun runMacroLimited(const std::map<std::string, std::string>& files, const std::string& main,
+                         const macro::Limits& limits);
 
 } // namespace gcx::test
