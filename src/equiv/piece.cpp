@@ -24,6 +24,7 @@ Piece Piece::rapidRun(const motion::Event& first, const motion::Event& last,
   p.extraStart_ = first.extraStart;
   p.length_ = (p.end_ - p.start_).norm();
   p.run_ = true;
+  p.first_ = first;
   return p;
 }
 

@@ -34,6 +34,8 @@ public:
                         const MotionState& state);
 
   const motion::Event& event() const { return event_; } // the last event of a rapid run
+  /// The first event of a rapid run (the piece's event otherwise): where its state starts.
+  const motion::Event& firstEvent() const { return run_ ? first_ : event_; }
   const MotionState& state() const { return state_; }
   bool isArc() const { return arc_.has_value(); }
   bool isRapidRun() const { return run_; }
@@ -58,6 +60,7 @@ public:
 
 private:
   motion::Event event_;
+  motion::Event first_; // rapid runs only
   MotionState state_;
   std::optional<motion::ArcGeometry> arc_;
   Vec3 start_, end_;

@@ -369,8 +369,8 @@ private:
   void pieces() {
     const Piece &pa = *a_.piece, &pb = *b_.piece;
     if (std::string why = stateDifference(pa.state(), pb.state()); !why.empty())
-      return diverge(DivergenceKind::State, why, 0, pa.point(a_.t), sideAt(pa.event()),
-                     sideAt(pb.event()));
+      return diverge(DivergenceKind::State, why, 0, pa.point(a_.t), sideAt(pa.firstEvent()),
+                     sideAt(pb.firstEvent()));
     if (pa.isRapidRun() && pb.isRapidRun()) return rapidRuns();
 
     Side& lead = a_.remaining() <= b_.remaining() ? a_ : b_;
