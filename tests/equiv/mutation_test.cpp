@@ -167,6 +167,77 @@ INSTANTIATE_TEST_SUITE_P(Examples, EquivMutation, testing::ValuesIn(kMutations),
                                   std::to_string(p.param.line) + "_" + std::to_string(p.index);
                          });
 
+/// The R5 corner G2 X0 Y65 I5 J0 (from X-5 Y60) as 60 chords at equal angles.
+constexpr const char* kCornerChords = "G1 X-4.998287 Y60.130885\nG1 X-4.993148 Y60.261680\nG1 "
+                                      "X-4.984587 Y60.392295\nG1 X-4.972609 Y60.522642\n"
+                                      "G1 X-4.957224 Y60.652631\nG1 X-4.938442 Y60.782172\nG1 "
+                                      "X-4.916275 Y60.911178\nG1 X-4.890738 Y61.039558\n"
+                                      "G1 X-4.861850 Y61.167227\nG1 X-4.829629 Y61.294095\nG1 "
+                                      "X-4.794099 Y61.420077\nG1 X-4.755283 Y61.545085\n"
+                                      "G1 X-4.713207 Y61.669034\nG1 X-4.667902 Y61.791840\nG1 "
+                                      "X-4.619398 Y61.913417\nG1 X-4.567727 Y62.033683\n"
+                                      "G1 X-4.512926 Y62.152555\nG1 X-4.455033 Y62.269952\nG1 "
+                                      "X-4.394086 Y62.385794\nG1 X-4.330127 Y62.500000\n"
+                                      "G1 X-4.263201 Y62.612493\nG1 X-4.193353 Y62.723195\nG1 "
+                                      "X-4.120631 Y62.832031\nG1 X-4.045085 Y62.938926\n"
+                                      "G1 X-3.966767 Y63.043807\nG1 X-3.885730 Y63.146602\nG1 "
+                                      "X-3.802030 Y63.247240\nG1 X-3.715724 Y63.345653\n"
+                                      "G1 X-3.626872 Y63.441773\nG1 X-3.535534 Y63.535534\nG1 "
+                                      "X-3.441773 Y63.626872\nG1 X-3.345653 Y63.715724\n"
+                                      "G1 X-3.247240 Y63.802030\nG1 X-3.146602 Y63.885730\nG1 "
+                                      "X-3.043807 Y63.966767\nG1 X-2.938926 Y64.045085\n"
+                                      "G1 X-2.832031 Y64.120631\nG1 X-2.723195 Y64.193353\nG1 "
+                                      "X-2.612493 Y64.263201\nG1 X-2.500000 Y64.330127\n"
+                                      "G1 X-2.385794 Y64.394086\nG1 X-2.269952 Y64.455033\nG1 "
+                                      "X-2.152555 Y64.512926\nG1 X-2.033683 Y64.567727\n"
+                                      "G1 X-1.913417 Y64.619398\nG1 X-1.791840 Y64.667902\nG1 "
+                                      "X-1.669034 Y64.713207\nG1 X-1.545085 Y64.755283\n"
+                                      "G1 X-1.420077 Y64.794099\nG1 X-1.294095 Y64.829629\nG1 "
+                                      "X-1.167227 Y64.861850\nG1 X-1.039558 Y64.890738\n"
+                                      "G1 X-0.911178 Y64.916275\nG1 X-0.782172 Y64.938442\nG1 "
+                                      "X-0.652631 Y64.957224\nG1 X-0.522642 Y64.972609\n"
+                                      "G1 X-0.392295 Y64.984587\nG1 X-0.261680 Y64.993148\nG1 "
+                                      "X-0.130885 Y64.998287\nG1 X0.000000 Y65.000000";
+
+// Changes of segmentation only: the same path cut differently, M and S words reordered.
+const Mutation kSameMotion[] = {
+    // a line split into collinear pieces
+    {kEx, "O1001", "O1001", 16, "G1 X130 F800", "G1 X10 F800\nG1 X77.5\nG1 X130", G, ""},
+    {kEx, "O1001", "O1001", 34, "G1 X90", "G1 X30\nG1 X60\nG1 X90", G, ""},
+    // an arc split into arcs on the same circle (R15 about X90 Y50: through 45 degrees)
+    {kEx, "O1001", "O1001", 35, "G2 X105 Y50 R15",
+     "G2 X100.606602 Y60.606602 I0 J-15\nG2 X105 Y50 I-10.606602 J-10.606602", G, ""},
+    {kEx, "O1002", "O1002", 16, "G3 I-7", "G3 X43 Y40 I-7\nG3 X57 Y40 I7", G, ""},
+    // an arc as fine chords: the R5 corner as 60 chords (0.0002 mm sagitta)
+    {kEx, "O1001", "O1001", 33, "G2 X0 Y65 I5 J0", kCornerChords, G, ""},
+    // M and S words reordered, a redundant M5 while stopped
+    {kEx, "O1001", "O1001", 9, "S3000 M3", "M3 S3000", S, ""},
+    {kEx, "O1001", "O1001", 9, "S3000 M3", "M5\nS3000\nM3", S, ""},
+    {kEx, "O1003", "O1003", 10, "S1800 M3", "M3\nS1800", S, ""},
+};
+
+class EquivSameMotion : public testing::TestWithParam<Mutation> {};
+
+TEST_P(EquivSameMotion, JudgedEquivalent) {
+  const Mutation& m = GetParam();
+  const fs::path dir = fs::temp_directory_path() / ("gcx-equiv-same-" + std::to_string(::getpid()) +
+                                                    "-" + m.file + "-" + std::to_string(m.line));
+  const fs::path changed = mutate(m, dir);
+  const ProgramInput a{(sourceDir() / m.dir / (std::string(m.main) + ".nct")).string(), setupOf(m),
+                       ProgramInput::Reader::Gcx};
+  const ProgramInput b{changed.string(), setupOf(m), ProgramInput::Reader::Gcx};
+  const equiv::EquivOutcome o = equiv::checkEquivalence(a, b, equiv::EquivOptions{});
+  fs::remove_all(dir);
+  ASSERT_TRUE(o.ok) << m;
+  EXPECT_TRUE(o.result.equivalent) << m << "\n" << equiv::renderText(o, 0.001);
+}
+
+INSTANTIATE_TEST_SUITE_P(Examples, EquivSameMotion, testing::ValuesIn(kSameMotion),
+                         [](const testing::TestParamInfo<Mutation>& p) {
+                           return std::string(p.param.file) + "_line" +
+                                  std::to_string(p.param.line) + "_" + std::to_string(p.index);
+                         });
+
 TEST(EquivMutation, AtLeastThirty) {
   EXPECT_GE(std::size(kMutations), 30u);
 }
