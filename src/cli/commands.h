@@ -51,6 +51,7 @@ struct EquivCommandOptions {
   std::string setupB; // B's own
   double tolerance = 0.001;
   bool strictRapids = false;
+  std::string rs274 = "rs274"; // --rs274: the executable reading .ngc programs
 };
 
 int runCheck(const std::vector<std::string>& files, const CommonOptions& opt);

@@ -20,6 +20,7 @@ int runEquiv(const std::string& a, const std::string& b, const EquivCommandOptio
   o.common = opt.common;
   o.walk.tolerance = opt.tolerance;
   o.walk.strictRapids = opt.strictRapids;
+  o.rs274 = opt.rs274;
   const equiv::EquivOutcome out = equiv::checkEquivalence(ia, ib, o);
   if (!out.a || !out.b) return UsageError;
   // diagnostics in a stable order: A's, then B's
