@@ -40,6 +40,29 @@ bool readText(const std::string& path, std::string& text) {
   return static_cast<bool>(in) || in.eof();
 }
 
+/// The program line rs274 stopped at: it echoes the failing block, which starts with the
+/// N<line> number every line was given (oracle/rs274.h); 1 when it cannot tell.
+std::uint32_t failingLine(const oracle::Rs274Result& r) {
+  const std::string& t = r.stderrText;
+  for (std::size_t at = t.rfind("\nN"); at != std::string::npos; at = t.rfind("\nN", at - 1)) {
+    std::uint32_t line = 0;
+    std::size_t i = at + 2;
+    while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i])))
+      line = line * 10 + static_cast<std::uint32_t>(t[i++] - '0');
+    if (i > at + 2 && line > 0) return line;
+    if (at == 0) break;
+  }
+  return 1;
+}
+
+std::string oneLine(std::string s) {
+  while (!s.empty() && (s.back() == '\n' || s.back() == ' '))
+    s.pop_back();
+  for (char& c : s)
+    if (c == '\n') c = ' ';
+  return s;
+}
+
 /// A stream that discards what it is given (DPRNT output of a compared program).
 class NullBuffer : public std::streambuf {
 protected:
@@ -150,11 +173,22 @@ private:
     return true;
   }
 
+  /// The location of the start of a line of the program text (so the source line can be shown).
+  SourceLoc lineStart(std::uint32_t line) const {
+    std::uint64_t offset = 0;
+    for (std::uint32_t l = 1; l < line && offset < text_.size(); ++l) {
+      const std::size_t eol = text_.find('\n', offset);
+      if (eol == std::string::npos) break;
+      offset = eol + 1;
+    }
+    return SourceLoc{file_, line, 1, offset};
+  }
+
   bool produceRs274() {
     const oracle::Rs274Result r = oracle::Rs274(options_).run(text_);
     if (!r.ok()) {
-      diags_.error(diag::code::Rs274Failed, SourceRange{SourceLoc{file_, 1, 1}, 0},
-                   fmt::format("rs274 could not run the program: {}", r.summary()));
+      diags_.error(diag::code::Rs274Failed, SourceRange{lineStart(failingLine(r)), 0},
+                   fmt::format("rs274 could not run the program: {}", oneLine(r.summary())));
       return false;
     }
     oracle::CanonOptions copt;

@@ -127,5 +127,18 @@ TEST(EquivCli, OWordWithoutRs274IsALocatedError) {
       << r.err;
 }
 
+// rs274's own errors are located at the line it stopped at.
+TEST(EquivCli, Rs274ErrorIsLocatedAtItsLine) {
+  if (std::system("command -v rs274 > /dev/null 2>&1") != 0) GTEST_SKIP() << "no rs274";
+  Files f;
+  const std::string a = f.write("a.nct", "G90 G17 G21\nG1 X10 F100\nM30\n");
+  const std::string b = f.write("b.ngc", "G21 G90\nG1 X10 F100\nG2 X20 Y0 R-1\nM2\n");
+  const GcxRun r = gcx("equiv " + a + " " + b);
+  EXPECT_EQ(r.exit, 2);
+  EXPECT_NE(r.err.find("b.ngc:3:1: error: rs274 could not run the program: rs274 exit code 1"),
+            std::string::npos)
+      << r.err;
+}
+
 } // namespace
 } // namespace gcx::test
