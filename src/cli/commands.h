@@ -45,11 +45,21 @@ struct PlotOptions {
   std::string view = "xy";
 };
 
+struct EquivCommandOptions {
+  CommonOptions common;
+  std::string setup;  // both programs
+  std::string setupB; // B's own
+  double tolerance = 0.001;
+  bool strictRapids = false;
+  std::string rs274 = "rs274"; // --rs274: the executable reading .ngc programs
+};
+
 int runCheck(const std::vector<std::string>& files, const CommonOptions& opt);
 int runFmt(const std::string& file, const std::string& output, const CommonOptions& opt);
 int runDumpIr(const std::string& file, const CommonOptions& opt);
 int runExpand(const std::string& file, const ExpandOptions& opt);
 int runRun(const std::string& file, const RunOptions& opt);
 int runPlot(const std::string& file, const PlotOptions& opt);
+int runEquiv(const std::string& a, const std::string& b, const EquivCommandOptions& opt);
 
 } // namespace gcx::cli
