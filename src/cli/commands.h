@@ -43,6 +43,7 @@ struct PlotOptions {
   std::string setup;
   std::string output;
   std::string view = "xy";
+  std::string frame = "work"; // work or machine
 };
 
 int runCheck(const std::vector<std::string>& files, const CommonOptions& opt);

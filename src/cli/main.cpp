@@ -84,8 +84,14 @@ int main(int argc, char** argv) {
   plot->add_option("FILE", plotFile, "program file")->required();
   plot->add_option("-o,--output", plotOpt.output, "SVG file")->required();
   plot->add_option("--setup", plotOpt.setup, "machine setup (JSON): offsets, tools, ...");
-  plot->add_option("--view", plotOpt.view, "xy, xz, yz or iso")
+  plot->add_option("--view", plotOpt.view,
+                   "xy, xz (lathe convention: Z right, X up, X as a radius), yz or iso")
       ->check(CLI::IsMember({"xy", "xz", "yz", "iso"}));
+  plot->add_option("--frame", plotOpt.frame,
+                   "work (default): coordinates relative to the work origin in force at each "
+                   "move (work offset, G92/G52 shifts, tool length and turning offsets); machine: "
+                   "the machine frame, with the program's starting work zero marked")
+      ->check(CLI::IsMember({"work", "machine"}));
   addCommon(plot);
   addExecution(plot);
 
