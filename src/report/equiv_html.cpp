@@ -176,6 +176,13 @@ void drawing(std::string& s, const EquivPage& p, const PathRecorder& a, const Pa
 
 } // namespace
 
+motion::View defaultView(const PathRecorder& a, const PathRecorder& b) {
+  for (const PathRecorder* r : {&a, &b})
+    if (!r->bounds().isEmpty() && r->bounds().sizes().y() > 1e-9) return motion::View::XY;
+  const bool any = !a.bounds().isEmpty() || !b.bounds().isEmpty();
+  return any ? motion::View::XZ : motion::View::XY;
+}
+
 void writeEquivHtml(std::ostream& out, const EquivPage& page, const PathRecorder& a,
                     const PathRecorder& b, motion::View view) {
   std::string s;

@@ -24,6 +24,9 @@ inline constexpr const char* kSideAColour = "#1f5fbf";
 inline constexpr const char* kSideBColour = "#e8730c";
 inline constexpr const char* kMarkerColour = "#d0109c";
 
+/// XZ (the lathe convention) when neither path leaves one Y plane — a turning program — else XY.
+motion::View defaultView(const PathRecorder& a, const PathRecorder& b);
+
 void writeEquivHtml(std::ostream& out, const EquivPage& page, const PathRecorder& a,
                     const PathRecorder& b, motion::View view = motion::View::XY);
 

@@ -126,5 +126,19 @@ TEST(EquivHtml, AnEquivalentPairHasNoMarker) {
   EXPECT_NE(page.find("<h2>A: part&lt;1&gt;.nct</h2>"), std::string::npos);
 }
 
+TEST(EquivHtml, TurningProgramsAreShownInTheLatheView) {
+  PathRecorder mill, turn, empty;
+  test::recordSamplePaths(mill, empty, false);
+  turn.event(test::feed({20, 0, 0}, {20, 0, -30}));
+  turn.event(test::feed({20, 0, -30}, {25, 0, -35}));
+  EXPECT_EQ(defaultView(turn, turn), motion::View::XZ);
+  EXPECT_EQ(defaultView(turn, mill), motion::View::XY);
+  EXPECT_EQ(defaultView(empty, empty), motion::View::XY);
+  std::ostringstream out;
+  writeEquivHtml(out, test::samplePage(), turn, turn, defaultView(turn, turn));
+  EXPECT_NE(out.str().find("d=\"M0 -20L-30 -20 -35 -25\""), std::string::npos);
+  EXPECT_NE(out.str().find(">X (mm, radius)</text>"), std::string::npos);
+}
+
 } // namespace
 } // namespace gcx::report
