@@ -25,6 +25,8 @@ table.summary th,table.summary td{border:1px solid #ccc;padding:3px 8px;text-ali
 .legend span{display:inline-block;margin-right:14px}
 .swatch{display:inline-block;width:28px;height:0;vertical-align:middle;margin-right:4px}
 #plot{width:100%;height:62vh;border:1px solid #bbb;background:#fff;cursor:grab;display:block}
+#plot .grid line{vector-effect:non-scaling-stroke;stroke-width:1px}
+#plot .axes line{vector-effect:non-scaling-stroke;stroke-width:1.5px}
 .excerpts{display:flex;gap:12px;margin-top:12px}
 .excerpt{flex:1;min-width:0}
 .chain{font-size:12px;color:#555;margin:0 0 4px}
@@ -34,8 +36,8 @@ table.summary th,table.summary td{border:1px solid #ccc;padding:3px 8px;text-ali
 .row.caret{color:#d0109c}
 )";
 
-// Zoom with the wheel about the pointer, pan by dragging, "fit" and "zoom to divergence";
-// the marker keeps its size on screen.
+// Zoom with the wheel about the pointer, pan by dragging, "fit" and "zoom to divergence" (also
+// on opening OUT.html#at-divergence); the marker keeps its size on screen.
 constexpr const char* kScript = R"(
 (function(){
 var svg=document.getElementById('plot');
@@ -58,6 +60,7 @@ if(zd)zd.addEventListener('click',function(){var x=+marker.dataset.x,y=+marker.d
  var w=home[2]/20,h=home[3]/20;set([x-w/2,y-h/2,w,h]);});
 window.addEventListener('resize',function(){set(vb);});
 set(vb);
+if(zd&&location.hash==='#at-divergence')zd.click();
 })();
 )";
 

@@ -1,8 +1,9 @@
 // The HTML report of `gcx equiv --report OUT.html`: one self-contained page (inline CSS and
 // script, no network, no external fonts) with the verdict and a summary table, both paths
 // overlaid in one SVG (A and B in two colours, rapids dashed, a legend) with the divergence
-// marked, zoom (mouse wheel) and pan (drag) and "fit" / "zoom to divergence" buttons, and the
-// two source excerpts side by side with the divergent line highlighted.
+// marked, zoom (mouse wheel) and pan (drag) and "fit" / "zoom to divergence" buttons (opening
+// OUT.html#at-divergence starts zoomed there), and the two source excerpts side by side with the
+// divergent line highlighted.
 //
 // The drawing is in the machine frame (the frame the comparison works in) and reuses the
 // plotter's pieces (motion/svg_drawing.h). Stable hooks: the SVG is #plot, the paths are in
