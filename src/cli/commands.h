@@ -46,11 +46,20 @@ struct PlotOptions {
   std::string frame = "work"; // work or machine
 };
 
+struct EquivCommandOptions {
+  CommonOptions common;
+  std::string setup;  // both programs
+  std::string setupB; // B's own
+  double tolerance = 0.001;
+  bool strictRapids = false;
+};
+
 int runCheck(const std::vector<std::string>& files, const CommonOptions& opt);
 int runFmt(const std::string& file, const std::string& output, const CommonOptions& opt);
 int runDumpIr(const std::string& file, const CommonOptions& opt);
 int runExpand(const std::string& file, const ExpandOptions& opt);
 int runRun(const std::string& file, const RunOptions& opt);
 int runPlot(const std::string& file, const PlotOptions& opt);
+int runEquiv(const std::string& a, const std::string& b, const EquivCommandOptions& opt);
 
 } // namespace gcx::cli

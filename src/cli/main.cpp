@@ -95,6 +95,20 @@ int main(int argc, char** argv) {
   addCommon(plot);
   addExecution(plot);
 
+  EquivCommandOptions equivOpt;
+  std::string equivA, equivB;
+  CLI::App* equiv = app.add_subcommand("equiv", "whether two programs move the tool the same");
+  equiv->add_option("A", equivA, "first program (any dialect gcx reads, or RS274/NGC)")->required();
+  equiv->add_option("B", equivB, "second program")->required();
+  equiv->add_option("--setup", equivOpt.setup, "machine setup (JSON) of both programs");
+  equiv->add_option("--setup-b", equivOpt.setupB, "B's own machine setup (JSON), or none");
+  equiv->add_option("--tol", equivOpt.tolerance, "how far the paths may be apart (mm)")
+      ->check(CLI::PositiveNumber);
+  equiv->add_flag("--strict-rapids", equivOpt.strictRapids,
+                  "compare the path of rapids, not only where each run of rapids ends");
+  addCommon(equiv);
+  addExecution(equiv);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -120,6 +134,10 @@ int main(int argc, char** argv) {
   if (plot->parsed()) {
     plotOpt.common = common;
     return runPlot(plotFile, plotOpt);
+  }
+  if (equiv->parsed()) {
+    equivOpt.common = common;
+    return runEquiv(equivA, equivB, equivOpt);
   }
   return UsageError;
 }

@@ -116,4 +116,8 @@ inline constexpr const char* ThreadSpecification = "2021";      // G78.7/G76.7 l
 inline constexpr const char* CycleThreadCss = "CYC-THREAD-CSS"; // warning: threading in G96
 inline constexpr const char* KeptContourLost = "GCX042"; // --keep cycles: a contour did not survive
 
+// --- gcx equiv: reading RS274/NGC (docs/equivalence.md)
+inline constexpr const char* NeedsRs274 = "GCX050";  // full LinuxCNC without rs274 installed
+inline constexpr const char* Rs274Failed = "GCX051"; // rs274 rejected the program or its output
+
 } // namespace gcx::diag::code

@@ -1,0 +1,51 @@
+// gcx equiv A B: whether two programs move the tool the same (docs/equivalence.md).
+// Exit 0 equivalent, 1 different, 2 a program could not be read or run.
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.h"
+#include "cli/session.h"
+#include "equiv/equiv.h"
+#include "equiv/report.h"
+
+namespace gcx::cli {
+
+int runEquiv(const std::string& a, const std::string& b, const EquivCommandOptions& opt) {
+  equiv::ProgramInput ia{a, opt.setup, equiv::ProgramInput::Reader::Auto};
+  // `--setup-b none`: B runs without a setup (gcx's canonical output has its offsets baked in)
+  const std::string setupB =
+      opt.setupB == "none" ? std::string() : (opt.setupB.empty() ? opt.setup : opt.setupB);
+  equiv::ProgramInput ib{b, setupB, equiv::ProgramInput::Reader::Auto};
+  equiv::EquivOptions o;
+  o.common = opt.common;
+  o.walk.tolerance = opt.tolerance;
+  o.walk.strictRapids = opt.strictRapids;
+  const equiv::EquivOutcome out = equiv::checkEquivalence(ia, ib, o);
+  if (!out.a || !out.b) return UsageError;
+  // diagnostics in a stable order: A's, then B's
+  for (const equiv::ProgramSide* side : {out.a.get(), out.b.get()}) {
+    if (opt.common.json) continue;
+    for (const diag::Diagnostic& d : side->diagnostics())
+      std::cerr << diag::renderText(d, side->sources());
+  }
+  if (!out.ok) {
+    if (opt.common.json) {
+      nlohmann::json j;
+      j["error"] = true;
+      j["diagnostics"] = nlohmann::json::array();
+      for (const equiv::ProgramSide* side : {out.a.get(), out.b.get()})
+        for (auto& d :
+             nlohmann::json::parse(diag::renderJson(side->diagnostics(), side->sources())))
+          j["diagnostics"].push_back(d);
+      std::cout << j.dump() << '\n';
+    }
+    return UsageError;
+  }
+  if (opt.common.json)
+    std::cout << equiv::toJson(out, opt.tolerance).dump() << '\n';
+  else
+    std::cout << equiv::renderText(out, opt.tolerance);
+  return out.result.equivalent ? Ok : ProgramErrors;
+}
+
+} // namespace gcx::cli

@@ -1,0 +1,56 @@
+// `gcx equiv`: whether two programs, in any dialect gcx reads, move the tool the same
+// (docs/equivalence.md). Each program runs in its own thread, gcx's interpreter for the
+// dialects gcx reads and LinuxCNC's `rs274` for RS274/NGC, feeding a bounded queue; the
+// comparison walks both event streams as they come, so memory does not grow with the program.
+// `gcx translate --verify` calls the same check.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cli/commands.h"
+#include "diag/diagnostic.h"
+#include "equiv/result.h"
+#include "equiv/walker.h"
+
+namespace gcx::equiv {
+
+struct ProgramInput {
+  std::string path;
+  std::string setup; // machine setup (JSON, machine/setup.h); empty: defaults
+  /// Auto: `.ngc` through rs274 when it is installed, else gcx's reading of the canonical
+  /// subset; everything else through gcx's interpreter.
+  enum class Reader { Auto, Gcx, Rs274 } reader = Reader::Auto;
+};
+
+struct EquivOptions {
+  WalkOptions walk;
+  cli::CommonOptions common;   // the gcx side's execution options (--lib, limits, ...)
+  std::string rs274 = "rs274"; // executable: a path, or a name looked up in PATH
+  double rs274TimeoutSeconds = 600;
+  motion::Sink* tapA = nullptr; // receives every event of A, on A's thread
+  motion::Sink* tapB = nullptr;
+};
+
+/// One program as it was read: its name, sources (for provenance and excerpts) and
+/// diagnostics.
+class ProgramSide {
+public:
+  virtual ~ProgramSide() = default;
+  virtual const std::string& name() const = 0;
+  virtual const SourceManager& sources() const = 0;
+  virtual const std::vector<diag::Diagnostic>& diagnostics() const = 0;
+};
+
+struct EquivOutcome {
+  /// False when a program could not be read or run (its diagnostics say why; a usage problem
+  /// such as an unreadable file was printed already).
+  bool ok = false;
+  EquivResult result;
+  std::shared_ptr<ProgramSide> a, b;
+};
+
+EquivOutcome checkEquivalence(const ProgramInput& a, const ProgramInput& b,
+                              const EquivOptions& options);
+
+} // namespace gcx::equiv
