@@ -104,6 +104,9 @@ int main(int argc, char** argv) {
   equiv->add_option("--setup-b", equivOpt.setupB, "B's own machine setup (JSON), or none");
   equiv->add_option("--tol", equivOpt.tolerance, "how far the paths may be apart (mm)")
       ->check(CLI::PositiveNumber);
+  equiv->add_option("--report", equivOpt.report,
+                    "also write an HTML page: both paths overlaid, the divergence marked, the "
+                    "source around it on both sides");
   equiv->add_flag("--strict-rapids", equivOpt.strictRapids,
                   "compare the path of rapids, not only where each run of rapids ends");
   addCommon(equiv);

@@ -97,9 +97,11 @@ void summaryTable(std::string& s, const EquivPage& p) {
                    xmlEscape(p.b.name));
   s += fmt::format("<tr><th>program</th><td>{}</td><td>{}</td></tr>\n", xmlEscape(p.a.file),
                    xmlEscape(p.b.file));
-  s += fmt::format("<tr><th>path length (mm)</th><td>{}</td><td>{}</td></tr>\n", mm(p.a.length),
-                   mm(p.b.length));
-  s += fmt::format("<tr><th>time (s)</th><td>{}</td><td>{}</td></tr>\n", mm(p.a.time, 2),
+  // A difference stops the comparison: the figures then cover what was compared.
+  const char* upTo = p.equivalent ? "" : ", up to the divergence";
+  s += fmt::format("<tr><th>path length (mm{})</th><td>{}</td><td>{}</td></tr>\n", upTo,
+                   mm(p.a.length), mm(p.b.length));
+  s += fmt::format("<tr><th>time (s{})</th><td>{}</td><td>{}</td></tr>\n", upTo, mm(p.a.time, 2),
                    mm(p.b.time, 2));
   s += fmt::format("<tr><th>first divergence</th><td>{}</td><td>{}</td></tr>\n",
                    location(p.a.excerpt), location(p.b.excerpt));

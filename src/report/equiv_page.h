@@ -21,8 +21,8 @@ struct SourceExcerpt {
 struct EquivSide {
   std::string name;  // "A", "B"
   std::string file;  // the program
-  double length = 0; // path length, mm
-  double time = 0;   // estimated time, s
+  double length = 0; // path length, mm (up to the divergence when there is one)
+  double time = 0;   // estimated time, s (likewise)
   SourceExcerpt excerpt;
 };
 

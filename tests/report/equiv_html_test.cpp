@@ -80,9 +80,12 @@ TEST(EquivHtml, BothPathsTheMarkerTheExcerptsAndTheSummary) {
   EXPECT_NE(page.find("<p class=\"verdict different\">Different: end point Y differs by 10.000 "
                       "mm (60 &lt; 70)</p>"),
             std::string::npos);
-  EXPECT_NE(page.find("<tr><th>path length (mm)</th><td>330.000</td><td>350.000</td></tr>"),
+  EXPECT_NE(page.find("<tr><th>path length (mm, up to the "
+                      "divergence)</th><td>330.000</td><td>350.000</td></tr>"),
             std::string::npos);
-  EXPECT_NE(page.find("<tr><th>time (s)</th><td>24.50</td><td>26.25</td></tr>"), std::string::npos);
+  EXPECT_NE(
+      page.find("<tr><th>time (s, up to the divergence)</th><td>24.50</td><td>26.25</td></tr>"),
+      std::string::npos);
   EXPECT_NE(page.find("<td>part&lt;1&gt;.nct:12:4</td><td>out&amp;.ngc:7:1</td>"),
             std::string::npos);
   EXPECT_NE(page.find("<td colspan=\"2\">X100.000 Y60.000 Z0.000</td>"), std::string::npos);
@@ -123,6 +126,7 @@ TEST(EquivHtml, AnEquivalentPairHasNoMarker) {
   EXPECT_EQ(page.find("id=\"divergence\""), std::string::npos);
   EXPECT_EQ(page.find("zoom-divergence\""), std::string::npos);
   EXPECT_NE(page.find("<td colspan=\"2\">—</td>"), std::string::npos);
+  EXPECT_NE(page.find("<tr><th>path length (mm)</th>"), std::string::npos);
   EXPECT_NE(page.find("<h2>A: part&lt;1&gt;.nct</h2>"), std::string::npos);
 }
 
