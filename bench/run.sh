@@ -48,6 +48,15 @@ measure "gcx expand --to canonical ($lines lines)" "$lines" \
 gcx_secs=$(cat "$work/last")
 measure "gcx run --stats ($lines lines)" "$lines" "$gcx" run "$work/lines.nct" --stats
 
+echo "== equivalence: the program against its canonical output, each run in its own thread"
+# the canonical output under an .nct name: gcx reads it itself, streaming (as .ngc it would go
+# through rs274, which writes its whole output to a file first)
+cp "$work/out.ngc" "$work/out_canonical.nct"
+measure "gcx equiv (program vs canonical, $lines lines)" "$lines" \
+  "$gcx" equiv "$work/lines.nct" "$work/out_canonical.nct"
+equiv_secs=$(cat "$work/last")
+awk -v e="$equiv_secs" -v g="$gcx_secs" 'BEGIN { printf "ratio: gcx equiv takes %.2fx the time of gcx expand of one program\n", (g > 0 ? e / g : 0) }'
+
 if command -v rs274 > /dev/null; then
   echo "== LinuxCNC rs274 on the same program (output-file argument, its fastest mode)"
   rs274_measure "rs274 ($lines lines)" "$lines" "$work/lines.ngc" "$work/out.canon"

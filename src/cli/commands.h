@@ -52,7 +52,8 @@ struct EquivCommandOptions {
   std::string setupB; // B's own
   double tolerance = 0.001;
   bool strictRapids = false;
-  std::string report; // --report: the HTML page (docs/equivalence.md), empty: none
+  std::string rs274 = "rs274"; // --rs274: the executable reading .ngc programs
+  std::string report;          // --report: the HTML page (docs/equivalence.md), empty: none
 };
 
 int runCheck(const std::vector<std::string>& files, const CommonOptions& opt);

@@ -24,6 +24,7 @@ int runEquiv(const std::string& a, const std::string& b, const EquivCommandOptio
   o.common = opt.common;
   o.walk.tolerance = opt.tolerance;
   o.walk.strictRapids = opt.strictRapids;
+  o.rs274 = opt.rs274;
   // --report: each side's path recorded on its own thread; the page replaces the file only
   // when complete
   std::optional<AtomicOutput> page;

@@ -109,6 +109,8 @@ int main(int argc, char** argv) {
                     "source around it on both sides");
   equiv->add_flag("--strict-rapids", equivOpt.strictRapids,
                   "compare the path of rapids, not only where each run of rapids ends");
+  equiv->add_option("--rs274", equivOpt.rs274,
+                    "LinuxCNC's rs274 for .ngc programs (default: PATH)");
   addCommon(equiv);
   addExecution(equiv);
 

@@ -23,6 +23,8 @@ struct MotionState {
   int spindleDirection = 0; // +1 CW, -1 CCW, 0 stopped
   bool mist = false, flood = false;
   int tool = 0;
+  // where the spindle and coolant state was last set (reports only, never compared)
+  SourceLoc spindleSetAt, coolantSetAt;
 };
 
 class Piece {

@@ -104,6 +104,10 @@ std::string renderText(const EquivOutcome& o, double tolerance) {
     const Divergence& d = *r.divergence;
     out += sideLine("A", d.a, o.a->sources());
     out += sideLine("B", d.b, o.b->sources());
+    if (d.stateSetA.line != 0 || d.stateSetB.line != 0)
+      out += fmt::format("  the state was set at {} (A) and {} (B)\n",
+                         d.stateSetA.line ? locText(d.stateSetA, o.a->sources()) : "the start",
+                         d.stateSetB.line ? locText(d.stateSetB, o.b->sources()) : "the start");
     out += fmt::format("  {} difference at ({:.4f}, {:.4f}, {:.4f}) in the machine frame; "
                        "largest deviation before it {:.6f} mm (tolerance {} mm)\n",
                        kindName(d.kind), round6(d.where.x()), round6(d.where.y()),
@@ -129,6 +133,12 @@ nlohmann::json toJson(const EquivOutcome& o, double tolerance) {
                        {"at", {round6(d.where.x()), round6(d.where.y()), round6(d.where.z())}},
                        {"a", sideJson(d.a, o.a->sources())},
                        {"b", sideJson(d.b, o.b->sources())}};
+    auto setAt = [](const SourceLoc& at, const SourceManager& sm) -> nlohmann::json {
+      if (at.line == 0) return nullptr;
+      return {{"file", sm.name(at.file)}, {"line", at.line}, {"col", at.col}};
+    };
+    j["divergence"]["state_set_a"] = setAt(d.stateSetA, o.a->sources());
+    j["divergence"]["state_set_b"] = setAt(d.stateSetB, o.b->sources());
   } else {
     j["divergence"] = nullptr;
   }

@@ -31,6 +31,9 @@ struct Divergence {
   double amount = 0;                         // mm (geometry), or the value difference
   motion::Vec3 where = motion::Vec3::Zero(); // machine frame, where it happens
   SideAt a, b;
+  /// State: the blocks that set the differing spindle or coolant state (line 0: not set, or
+  /// not that kind of state).
+  SourceLoc stateSetA, stateSetB;
 };
 
 /// Per program: what was compared and its statistics up to where the comparison stopped (the

@@ -105,11 +105,13 @@ private:
       case Kind::Spindle:
         state_.spindleSpeed = e.value;
         state_.spindleDirection = e.direction;
+        state_.spindleSetAt = e.from.at;
         continue;
       case Kind::Coolant:
         if (e.value == 7) state_.mist = true;
         if (e.value == 8) state_.flood = true;
         if (e.value == 9) state_.mist = state_.flood = false;
+        state_.coolantSetAt = e.from.at;
         continue;
       case Kind::ToolChange:
         state_.tool = static_cast<int>(e.value);
@@ -368,9 +370,21 @@ private:
 
   void pieces() {
     const Piece &pa = *a_.piece, &pb = *b_.piece;
-    if (std::string why = stateDifference(pa.state(), pb.state()); !why.empty())
-      return diverge(DivergenceKind::State, why, 0, pa.point(a_.t), sideAt(pa.firstEvent()),
-                     sideAt(pb.firstEvent()));
+    if (std::string why = stateDifference(pa.state(), pb.state()); !why.empty()) {
+      // at a joint where the paths part already, the path is the difference, not the state
+      // the next piece starts with
+      if (a_.mid() != b_.mid() && !pa.isRapidRun() && !pb.isRapidRun() && partsAtJoint()) return;
+      diverge(DivergenceKind::State, why, 0, pa.point(a_.t), sideAt(pa.firstEvent()),
+              sideAt(pb.firstEvent()));
+      if (why.starts_with("spindle")) {
+        r_.divergence->stateSetA = pa.state().spindleSetAt;
+        r_.divergence->stateSetB = pb.state().spindleSetAt;
+      } else if (why.starts_with("coolant")) {
+        r_.divergence->stateSetA = pa.state().coolantSetAt;
+        r_.divergence->stateSetB = pb.state().coolantSetAt;
+      }
+      return;
+    }
     if (pa.isRapidRun() && pb.isRapidRun()) return rapidRuns();
 
     Side& lead = a_.remaining() <= b_.remaining() ? a_ : b_;
@@ -412,6 +426,21 @@ private:
     r_.maxDeviation = std::max(r_.maxDeviation, dev);
     lead.advance();
     follow.t = tf;
+  }
+
+  /// Whether the end of the shorter remaining piece is off the other side's path (then reports
+  /// it as a geometry divergence).
+  bool partsAtJoint() {
+    Side& lead = a_.remaining() <= b_.remaining() ? a_ : b_;
+    Side& follow = &lead == &a_ ? b_ : a_;
+    const Vec3 end = lead.piece->end();
+    const double hint =
+        std::min(1.0, follow.t + lead.remaining() / std::max(follow.piece->length(), 1e-12));
+    const double tf = follow.piece->nearest(end, follow.t, 1, hint, tol());
+    const Vec3 onFollow = follow.piece->point(tf);
+    if ((end - onFollow).norm() <= tol()) return false;
+    geometry(lead, follow, &lead == &a_, end, onFollow);
+    return true;
   }
 
   /// The paths part: where one side turned at a joint while the other was mid-piece, that
