@@ -168,5 +168,27 @@ INSTANTIATE_TEST_SUITE_P(Macro, EquivMacro, testing::ValuesIn(macroFolders()),
                            return "m" + safeName(p.param);
                          });
 
+// The lathe twins part where docs/nct-vs-linuxcnc.md says: `G0 X62 Z2 S800 M3` (or X16)
+// starts the spindle after its motion in NCT, before it in LinuxCNC. (What follows, G71.7
+// roughing against LinuxCNC's G71, differs by design too:
+// tests/differential/lathe_differential_test.)
+class EquivLathe : public testing::TestWithParam<std::string> {};
+
+TEST_P(EquivLathe, FirstDifferenceIsTheSpindleStartOfTheApproach) {
+  if (!oracle::rs274Available()) GTEST_SKIP() << "rs274 (linuxcnc-uspace) is not installed";
+  const fs::path dir = sourceDir() / "tests" / "differential" / "lathe";
+  ProgramInput a{(dir / (GetParam() + ".nct")).string(), "", ProgramInput::Reader::Gcx};
+  ProgramInput b{(dir / (GetParam() + ".ngc")).string(), "", ProgramInput::Reader::Rs274};
+  const equiv::EquivOutcome o = check(a, b);
+  ASSERT_TRUE(o.ok) << explain(o);
+  ASSERT_FALSE(o.result.equivalent);
+  EXPECT_EQ(o.result.divergence->summary, "spindle differs: stopped vs S800 CW");
+  EXPECT_EQ(o.result.divergence->a.event.from.at.line, 3u);
+  EXPECT_EQ(o.result.divergence->b.event.from.at.line, 2u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Lathe, EquivLathe,
+                         testing::Values("l01_shaft_taper", "l02_convex_arc", "l03_bore_id"));
+
 } // namespace
 } // namespace gcx::test
