@@ -95,6 +95,7 @@ public:
         ok_ = produceRs274();
       } else {
         ok_ = cli::executeProgram(*session_, o_.common, setup_, sink_, null_);
+        if (!ok_) sink_.flush(); // the motion before the error still counts
       }
     } catch (const Cancelled&) {
       // the comparison has its answer

@@ -13,6 +13,7 @@
 
 #include "equiv/equiv.h"
 #include "equiv/report.h"
+#include "motion/geometry.h"
 #include "oracle/rs274.h"
 #include "support/test_support.h"
 
@@ -167,6 +168,33 @@ INSTANTIATE_TEST_SUITE_P(Macro, EquivMacro, testing::ValuesIn(macroFolders()),
                          [](const testing::TestParamInfo<std::string>& p) {
                            return "m" + safeName(p.param);
                          });
+
+// EquivOptions::tapA/tapB see every event of their side (the HTML report records paths so).
+TEST(EquivTap, SeesEveryEventOfItsSide) {
+  struct Count : motion::Sink {
+    std::size_t moves = 0, all = 0;
+    bool finished = false;
+    void event(const motion::Event& e) override {
+      ++all;
+      moves += motion::isMotion(e) ? 1 : 0;
+    }
+    void finish() override { finished = true; }
+  } ta, tb;
+  equiv::EquivOptions opt;
+  opt.tapA = &ta;
+  opt.tapB = &tb;
+  const std::string program = (examples() / "O1001.nct").string();
+  const std::string setup = (examples() / "O1001.setup.json").string();
+  const equiv::EquivOutcome o =
+      equiv::checkEquivalence(ProgramInput{program, setup, ProgramInput::Reader::Gcx},
+                              ProgramInput{program, setup, ProgramInput::Reader::Gcx}, opt);
+  ASSERT_TRUE(o.ok && o.result.equivalent) << explain(o);
+  const motion::Stats& st = o.result.a.stats;
+  EXPECT_EQ(ta.moves, st.rapidMoves + st.feedMoves + st.arcMoves);
+  EXPECT_EQ(ta.all, tb.all);
+  EXPECT_GT(ta.all, ta.moves); // tool changes, spindle, coolant, ...
+  EXPECT_TRUE(ta.finished && tb.finished);
+}
 
 // The lathe twins part where docs/nct-vs-linuxcnc.md says: `G0 X62 Z2 S800 M3` (or X16)
 // starts the spindle after its motion in NCT, before it in LinuxCNC. (What follows, G71.7
