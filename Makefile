@@ -2,14 +2,16 @@
 BUILD ?= build
 JOBS ?= $(shell nproc)
 APT_PACKAGES := antlr4 libantlr4-runtime-dev libeigen3-dev libfmt-dev libcli11-dev \
-  libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev librapidcheck-dev \
+  libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev librapidcheck-dev libpng-dev \
   cmake g++ make time
-ORACLE_PACKAGES := linuxcnc-uspace
+# Optional: LinuxCNC's rs274 (the differential oracle) and chromium (renders the HTML report
+# in its test); the tests that need them are skipped without them.
+OPTIONAL_PACKAGES := linuxcnc-uspace chromium
 
 .PHONY: deps build demo test bench mutate format clean
 
 deps:
-	@scripts/install-deps.sh $(APT_PACKAGES) -- $(ORACLE_PACKAGES)
+	@scripts/install-deps.sh $(APT_PACKAGES) -- $(OPTIONAL_PACKAGES)
 
 $(BUILD)/CMakeCache.txt:
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release

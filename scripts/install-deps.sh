@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Install the Debian packages gcx needs, only when some are missing.
 # usage: install-deps.sh REQUIRED... -- OPTIONAL...
-# OPTIONAL packages (the rs274 oracle) are tried once; their absence skips differential tests.
+# OPTIONAL packages (the rs274 oracle, chromium) are tried once; their absence skips the tests
+# that need them (differential tests, the report rendering test).
 set -euo pipefail
 required=() optional=() seen_sep=0
 for p in "$@"; do
@@ -20,6 +21,6 @@ if [ -n "$need" ]; then
   $SUDO apt-get install -y -qq --no-install-recommends $need
 fi
 if [ -n "$want" ]; then
-  echo "installing (oracle): $want"
-  $SUDO apt-get install -y -qq --no-install-recommends $want || echo "warning: could not install $want; differential tests will be skipped"
+  echo "installing (optional): $want"
+  $SUDO apt-get install -y -qq --no-install-recommends $want || echo "warning: could not install $want; the tests that need it will be skipped"
 fi

@@ -43,6 +43,7 @@ struct PlotOptions {
   std::string setup;
   std::string output;
   std::string view = "xy";
+  std::string frame = "work"; // work or machine
 };
 
 struct EquivCommandOptions {
@@ -52,6 +53,7 @@ struct EquivCommandOptions {
   double tolerance = 0.001;
   bool strictRapids = false;
   std::string rs274 = "rs274"; // --rs274: the executable reading .ngc programs
+  std::string report;          // --report: the HTML page (docs/equivalence.md), empty: none
 };
 
 int runCheck(const std::vector<std::string>& files, const CommonOptions& opt);

@@ -2,11 +2,15 @@
 // Exit 0 equivalent, 1 different, 2 a program could not be read or run.
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "cli/commands.h"
+#include "cli/execute.h"
 #include "cli/session.h"
 #include "equiv/equiv.h"
+#include "equiv/html_page.h"
 #include "equiv/report.h"
+#include "report/equiv_html.h"
 
 namespace gcx::cli {
 
@@ -21,6 +25,19 @@ int runEquiv(const std::string& a, const std::string& b, const EquivCommandOptio
   o.walk.tolerance = opt.tolerance;
   o.walk.strictRapids = opt.strictRapids;
   o.rs274 = opt.rs274;
+  // --report: each side's path recorded on its own thread; the page replaces the file only
+  // when complete
+  std::optional<AtomicOutput> page;
+  report::PathRecorder pathA, pathB;
+  if (!opt.report.empty()) {
+    page.emplace(opt.report);
+    if (!page->ok()) {
+      reportUsage("cannot write " + opt.report);
+      return UsageError;
+    }
+    o.tapA = &pathA;
+    o.tapB = &pathB;
+  }
   const equiv::EquivOutcome out = equiv::checkEquivalence(ia, ib, o);
   if (!out.a || !out.b) return UsageError;
   // diagnostics in a stable order: A's, then B's
@@ -46,6 +63,11 @@ int runEquiv(const std::string& a, const std::string& b, const EquivCommandOptio
     std::cout << equiv::toJson(out, opt.tolerance).dump() << '\n';
   else
     std::cout << equiv::renderText(out, opt.tolerance);
+  if (page) {
+    report::writeEquivHtml(page->stream(), equiv::htmlPage(out, opt.tolerance), pathA, pathB,
+                           report::defaultView(pathA, pathB));
+    if (!page->commit()) return UsageError;
+  }
   return out.result.equivalent ? Ok : ProgramErrors;
 }
 

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "machine/interpreter.h"
+#include "motion/work_frame.h"
 #include "passes/check/static_checks.h"
 #include "passes/macro/expander.h"
 
@@ -36,14 +37,33 @@ int openWithSetup(Session& s, const std::string& file, const std::string& setupP
 }
 
 namespace {
+// What the interpreter writes to: the output sink itself, or its work-frame view, which asks the
+// interpreter for the work origin of each event.
+class FramedSink {
+public:
+  FramedSink(motion::Sink& out, Frame frame)
+      : out_(out), frame_(frame), work_(out, [this] { return interp_->workOrigin(); }) {}
+  motion::Sink& sink() { return frame_ == Frame::Work ? static_cast<motion::Sink&>(work_) : out_; }
+  void bind(const machine::Interpreter& interp) { interp_ = &interp; }
+
+private:
+  motion::Sink& out_;
+  Frame frame_;
+  motion::WorkFrame work_;
+  const machine::Interpreter* interp_ = nullptr;
+};
+
 // Programs with macro statements, variables or calls run through the expansion pass, which
 // loads them whole; everything else streams block by block.
 bool expandProgram(Session& s, const CommonOptions& opt, const machine::Setup& setup,
-                   motion::Sink& sink, std::ostream& printOut) {
+                   motion::Sink& out, std::ostream& printOut, Frame frame) {
   macro::ProgramLibrary library(s.dialect(), s.sources(), s.diags(), opt.libraryDirs);
   const macro::LoadedProgram* main = library.load(s.path());
   if (!main) return false;
+  FramedSink framed(out, frame);
+  motion::Sink& sink = framed.sink();
   machine::Interpreter interp(s.dialect().profile(), setup, sink, s.diags());
+  framed.bind(interp);
   macro::SystemVariables system(interp, s.diags());
   macro::Limits limits;
   limits.maxJumps = opt.maxJumps;
@@ -59,10 +79,13 @@ bool expandProgram(Session& s, const CommonOptions& opt, const machine::Setup& s
 } // namespace
 
 bool executeProgram(Session& s, const CommonOptions& opt, const machine::Setup& setup,
-                    motion::Sink& sink, std::ostream& printOut) {
-  if (macro::mayNeedExpansion(s.path())) return expandProgram(s, opt, setup, sink, printOut);
+                    motion::Sink& out, std::ostream& printOut, Frame frame) {
+  if (macro::mayNeedExpansion(s.path())) return expandProgram(s, opt, setup, out, printOut, frame);
   check::StaticChecker checker(s.dialect().profile(), s.diags());
+  FramedSink framed(out, frame);
+  motion::Sink& sink = framed.sink();
   machine::Interpreter interp(s.dialect().profile(), setup, sink, s.diags());
+  framed.bind(interp);
   ir::Block block;
   bool ok = true;
   while (ok && s.source().next(block)) {
@@ -82,6 +105,13 @@ bool executeProgram(Session& s, const CommonOptions& opt, const machine::Setup& 
   }
   sink.finish();
   return !s.diags().hasErrors();
+}
+
+motion::Vec3 initialWorkOrigin(Session& s, const machine::Setup& setup) {
+  struct Discard : motion::Sink {
+    void event(const motion::Event&) override {}
+  } discard;
+  return machine::Interpreter(s.dialect().profile(), setup, discard, s.diags()).workOrigin();
 }
 
 AtomicOutput::AtomicOutput(std::string path) : path_(std::move(path)) {

@@ -13,12 +13,20 @@ namespace gcx::cli {
 int openWithSetup(Session& s, const std::string& file, const std::string& setupPath,
                   machine::Setup& setup);
 
+/// The frame events reach the sink in: the interpreter's machine frame, or the work frame of
+/// motion/work_frame.h (points relative to the work origin in force at each event).
+enum class Frame { Machine, Work };
+
 /// Static checks and execution, block by block; stops at the first error. True if the whole
 /// program ran without error.
 /// Programs with macro statements or calls go through the expansion pass (loaded whole);
 /// DPRNT output goes to printOut.
 bool executeProgram(Session& s, const CommonOptions& opt, const machine::Setup& setup,
-                    motion::Sink& sink, std::ostream& printOut);
+                    motion::Sink& sink, std::ostream& printOut, Frame frame = Frame::Machine);
+
+/// The work origin (machine frame) a program starts with under this setup: the initial work
+/// offset plus the common shift.
+motion::Vec3 initialWorkOrigin(Session& s, const machine::Setup& setup);
 
 /// Writes through a temporary file that replaces `path` only on success (never a partial file);
 /// an empty path means standard output.

@@ -84,8 +84,14 @@ int main(int argc, char** argv) {
   plot->add_option("FILE", plotFile, "program file")->required();
   plot->add_option("-o,--output", plotOpt.output, "SVG file")->required();
   plot->add_option("--setup", plotOpt.setup, "machine setup (JSON): offsets, tools, ...");
-  plot->add_option("--view", plotOpt.view, "xy, xz, yz or iso")
+  plot->add_option("--view", plotOpt.view,
+                   "xy, xz (lathe convention: Z right, X up, X as a radius), yz or iso")
       ->check(CLI::IsMember({"xy", "xz", "yz", "iso"}));
+  plot->add_option("--frame", plotOpt.frame,
+                   "work (default): coordinates relative to the work origin in force at each "
+                   "move (work offset, G92/G52 shifts, tool length and turning offsets); machine: "
+                   "the machine frame, with the program's starting work zero marked")
+      ->check(CLI::IsMember({"work", "machine"}));
   addCommon(plot);
   addExecution(plot);
 
@@ -98,6 +104,9 @@ int main(int argc, char** argv) {
   equiv->add_option("--setup-b", equivOpt.setupB, "B's own machine setup (JSON), or none");
   equiv->add_option("--tol", equivOpt.tolerance, "how far the paths may be apart (mm)")
       ->check(CLI::PositiveNumber);
+  equiv->add_option("--report", equivOpt.report,
+                    "also write an HTML page: both paths overlaid, the divergence marked, the "
+                    "source around it on both sides");
   equiv->add_flag("--strict-rapids", equivOpt.strictRapids,
                   "compare the path of rapids, not only where each run of rapids ends");
   equiv->add_option("--rs274", equivOpt.rs274,

@@ -1,4 +1,5 @@
-// gcx plot FILE -o OUT.svg: the tool path as a picture (rapids dashed, feeds solid).
+// gcx plot FILE -o OUT.svg: the tool path as a picture (rapids dashed, feeds solid), in the
+// work frame unless --frame machine.
 #include "cli/commands.h"
 #include "cli/execute.h"
 #include "motion/svg_plotter.h"
@@ -10,18 +11,20 @@ int runPlot(const std::string& file, const PlotOptions& opt) {
   machine::Setup setup;
   if (int rc = openWithSetup(s, file, opt.setup, setup)) return rc;
   motion::SvgOptions sopt;
-  sopt.view = opt.view == "xz"    ? motion::View::XZ
-              : opt.view == "yz"  ? motion::View::YZ
-              : opt.view == "iso" ? motion::View::Iso
-                                  : motion::View::XY;
+  sopt.view = motion::parseView(opt.view).value_or(motion::View::XY);
   sopt.title = file;
+  const bool machineFrame = opt.frame == "machine";
+  // In the machine frame the marker shows where the program's zero starts out.
+  if (machineFrame) sopt.origin = initialWorkOrigin(s, setup);
+  sopt.title += machineFrame ? ", machine frame" : ", work frame";
   AtomicOutput out(opt.output);
   if (!out.ok()) {
     reportUsage("cannot write " + opt.output);
     return UsageError;
   }
   motion::SvgPlotter plotter(out.stream(), sopt);
-  const bool ok = executeProgram(s, opt.common, setup, plotter, printStream(opt.common, false));
+  const bool ok = executeProgram(s, opt.common, setup, plotter, printStream(opt.common, false),
+                                 machineFrame ? Frame::Machine : Frame::Work);
   s.flushDiagnostics();
   if (!ok) return ProgramErrors;
   return out.commit() ? Ok : UsageError;

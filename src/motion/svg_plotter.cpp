@@ -15,45 +15,7 @@ namespace {
 constexpr double kContinuity = 1e-9; // mm
 constexpr const char* kFeedColour = "#1f5fbf";
 constexpr const char* kRapidColour = "#d03030";
-
-using Vec2 = Eigen::Vector2d;
-
-Vec2 project(View v, const Vec3& p) {
-  switch (v) {
-  case View::XY:
-    return {p.x(), p.y()};
-  case View::XZ:
-    return {p.x(), p.z()};
-  case View::YZ:
-    return {p.y(), p.z()};
-  case View::Iso: // screen right = (1,1,0)/√2, screen up = (−1,1,2)/√6
-    return {(p.x() + p.y()) / std::sqrt(2.0), (-p.x() + p.y() + 2 * p.z()) / std::sqrt(6.0)};
-  }
-  return {p.x(), p.y()};
-}
 } // namespace
-
-std::optional<View> parseView(std::string_view name) {
-  if (name == "xy") return View::XY;
-  if (name == "xz") return View::XZ;
-  if (name == "yz") return View::YZ;
-  if (name == "iso") return View::Iso;
-  return std::nullopt;
-}
-
-const char* viewName(View v) {
-  switch (v) {
-  case View::XY:
-    return "XY";
-  case View::XZ:
-    return "XZ";
-  case View::YZ:
-    return "YZ";
-  case View::Iso:
-    return "isometric";
-  }
-  return "XY";
-}
 
 SvgPlotter::SvgPlotter(std::ostream& out, SvgOptions opt) : out_(out), opt_(std::move(opt)) {}
 
@@ -87,8 +49,8 @@ void SvgPlotter::write(std::ostream& out) const {
   const double size3 = box3.isEmpty() ? 1.0 : std::max(box3.sizes().maxCoeff(), 1e-9);
   const double tol = opt_.relativeTolerance * size3;
 
-  std::vector<std::vector<Vec2>> lines(runs_.size());
-  Eigen::AlignedBox2d box2;
+  std::vector<Polyline> lines(runs_.size());
+  Box2 box2;
   std::vector<Vec3> pts;
   for (std::size_t r = 0; r < runs_.size(); ++r) {
     const std::size_t end = r + 1 < runs_.size() ? runs_[r + 1].first : moves_.size();
@@ -99,49 +61,37 @@ void SvgPlotter::write(std::ostream& out) const {
       else
         pts.push_back(moves_[i].end);
     }
+    lines[r].rapid = runs_[r].rapid;
     for (const Vec3& p : pts) {
-      lines[r].push_back(project(opt_.view, p));
-      box2.extend(lines[r].back());
+      lines[r].points.push_back(project(opt_.view, p));
+      box2.extend(lines[r].points.back());
     }
   }
-  if (box2.isEmpty()) box2.extend(Vec2(0, 0));
+  if (opt_.origin) box2.extend(project(opt_.view, *opt_.origin));
 
-  const double size = std::max(box2.sizes().maxCoeff(), size3 * 1e-3);
-  const int dec = std::clamp(5 - static_cast<int>(std::floor(std::log10(size))), 3, 12);
-  auto num = [dec](double v) { return formatDecimal(v, dec); };
-  const double margin = opt_.margin * size;
-  const double font = size / 40;
-  const double band = 3.5 * font; // title and legend above the drawing
-  // y is flipped: a view point (u, v) is drawn at (u, −v).
-  const double x0 = box2.min().x() - margin, y0 = -box2.max().y() - margin - band;
-  const double w = box2.sizes().x() + 2 * margin, h = box2.sizes().y() + 2 * margin + band;
+  const SvgCanvas c(opt_.view, box2, size3 * 1e-3, opt_.margin, 3.5, opt_.grid);
+  auto num = [&c](double v) { return c.num(v); };
+  const double size = c.size(), font = c.font();
+  const double y0 = c.y0();
   const double feedWidth = size / 400, rapidWidth = size / 600;
   const std::string title = xmlEscape(opt_.title + " (" + viewName(opt_.view) + ")");
 
   std::string s;
   s += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   s += fmt::format("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" "
-                   "viewBox=\"{} {} {} {}\">\n",
-                   num(opt_.widthPx), num(opt_.widthPx * h / w), num(x0), num(y0), num(w), num(h));
+                   "viewBox=\"{}\">\n",
+                   num(opt_.widthPx), num(opt_.widthPx * c.height() / c.width()), c.viewBox());
   s += "<title>" + title + "</title>\n";
+  s += c.grid();
   s += "<g fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
-  for (std::size_t r = 0; r < runs_.size(); ++r) {
-    const bool rapid = runs_[r].rapid;
-    s += rapid ? fmt::format("<path class=\"rapid\" stroke=\"{}\" stroke-width=\"{}\" "
-                             "stroke-dasharray=\"{} {}\" d=\"",
-                             kRapidColour, num(rapidWidth), num(size / 100), num(size / 150))
-               : fmt::format("<path class=\"feed\" stroke=\"{}\" stroke-width=\"{}\" d=\"",
-                             kFeedColour, num(feedWidth));
-    for (std::size_t i = 0; i < lines[r].size(); ++i) {
-      s += i == 0 ? "M" : i == 1 ? "L" : " ";
-      s += num(lines[r][i].x()) + ' ' + num(-lines[r][i].y());
-    }
-    s += "\"/>\n";
-  }
+  s += c.paths(lines, PathStyle{"feed", kFeedColour, feedWidth},
+               PathStyle{"rapid", kRapidColour, rapidWidth, size / 100, size / 150});
   s += "</g>\n";
+  if (opt_.origin) s += c.originMarker(project(opt_.view, *opt_.origin), opt_.originLabel);
 
   // Legend: a sample stroke and a label for each style, under the title.
-  const double tx = x0 + margin, ty = y0 + margin + font, ly = ty + 1.5 * font;
+  // In the band above the drawing area.
+  const double tx = c.areaLeft(), ty = y0 + 1.3 * font, ly = ty + 1.5 * font;
   s += fmt::format("<g font-family=\"sans-serif\" font-size=\"{}\" fill=\"#222\">\n", num(font));
   s += fmt::format("<text x=\"{}\" y=\"{}\">{}</text>\n", num(tx), num(ty), title);
   auto legend = [&](double x, const char* colour, double width, bool dashed, const char* label) {

@@ -8,6 +8,10 @@
 // a run either. So the count is the same in every view. Example:
 //   G0 A→B, G0 B→C | G1 C→D, G2 D→E, G4, G1 E→F | G0 F→G | G1 H→I (H ≠ G)  →  4 paths.
 // Coordinates are in mm; the SVG y axis is flipped so the vertical axis of the view points up.
+// Behind the path (except in iso) a grid with a 1-2-5 step and a scale in mm, the axes through
+// zero and their names (<line> and <text> only); the origin marker (<circle>, <line>, <text>)
+// is drawn over it. The picture shows whatever frame its events are in: `gcx plot` hands it
+// the work frame by default (motion/work_frame.h).
 #pragma once
 #include <cstddef>
 #include <optional>
@@ -17,15 +21,9 @@
 #include <vector>
 
 #include "motion/event.h"
+#include "motion/svg_drawing.h"
 
 namespace gcx::motion {
-
-/// xy, xz, yz: plan and elevations (first axis right, second up). iso: isometric view from
-/// (+1, −1, +1): X runs right-down, Y right-up, Z up.
-enum class View { XY, XZ, YZ, Iso };
-/// "xy", "xz", "yz", "iso" (case-sensitive); nullopt otherwise.
-std::optional<View> parseView(std::string_view name);
-const char* viewName(View v);
 
 struct SvgOptions {
   View view = View::XY;
@@ -33,6 +31,11 @@ struct SvgOptions {
   double widthPx = 800;                // width attribute; height keeps the aspect ratio
   double relativeTolerance = 1e-3;     // arc chord tolerance, as a fraction of the path size
   double margin = 0.05;                // around the path, as a fraction of the drawing size
+  bool grid = true;                    // grid, axes and scale (never in iso)
+  /// Where the origin marker goes (in the events' frame), always inside the drawing; none if
+  /// empty. The work frame's zero by default.
+  std::optional<Vec3> origin = Vec3::Zero();
+  std::string originLabel = "work zero";
 };
 
 class SvgPlotter : public Sink {

@@ -1,5 +1,7 @@
 // Short constructors for motion events in tests.
 #pragma once
+#include <vector>
+
 #include "motion/event.h"
 
 namespace gcx::motion::test {
@@ -48,5 +50,13 @@ inline Event valueEvent(Kind kind, double value, bool perRevolution = false) {
   e.perRevolution = perRevolution;
   return e;
 }
+
+/// A sink that keeps every event and whether finish() came.
+struct Collect : Sink {
+  std::vector<Event> events;
+  bool finished = false;
+  void event(const Event& e) override { events.push_back(e); }
+  void finish() override { finished = true; }
+};
 
 } // namespace gcx::motion::test

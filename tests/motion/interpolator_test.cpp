@@ -10,6 +10,7 @@
 namespace gcx::motion {
 namespace {
 
+using test::Collect;
 constexpr double pi = std::numbers::pi;
 
 double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
@@ -18,13 +19,6 @@ double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
   const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
   return (p - (a + t * ab)).norm();
 }
-
-struct Collect : Sink {
-  std::vector<Event> events;
-  bool finished = false;
-  void event(const Event& e) override { events.push_back(e); }
-  void finish() override { finished = true; }
-};
 
 TEST(Interpolator, ChordErrorStaysWithinToleranceOnRandomArcs) {
   std::mt19937 rng(42);

@@ -137,10 +137,99 @@ TEST(SvgPlotter, RunCountMatchesPathElements) {
 
 TEST(SvgPlotter, FlipsYAndFitsTheViewBox) {
   const std::string svg = plot({feed({0, 0, 0}, {10, 20, 0})});
-  // size 20, margin 1, band 3.5·0.5 = 1.75 above
+  // size 20, margin 1, font 0.5, band 3.5·0.5 = 1.75 above; the scale adds a gutter of
+  // (0.6·2 characters + 2)·0.5 = 1.6 on the left, 2.8·0.5 = 1.4 below, 1.5·0.5 = 0.75 right
   EXPECT_NE(svg.find("d=\"M0 0L10 -20\""), std::string::npos) << svg;
-  EXPECT_NE(svg.find("viewBox=\"-1 -22.75 12 23.75\""), std::string::npos) << svg;
-  EXPECT_NE(svg.find("width=\"800\" height=\"1583.3333\""), std::string::npos) << svg;
+  EXPECT_NE(svg.find("viewBox=\"-2.6 -22.75 14.35 25.15\""), std::string::npos) << svg;
+  EXPECT_NE(svg.find("width=\"800\" height=\"1402.0906\""), std::string::npos) << svg;
+}
+
+std::vector<std::string> elements(const std::string& svg, const std::string& group,
+                                  const std::string& tag) {
+  const auto begin = svg.find("<g class=\"" + group + "\"");
+  if (begin == std::string::npos) return {};
+  const auto end = svg.find("</g>", begin);
+  std::vector<std::string> out;
+  for (auto p = svg.find("<" + tag + " ", begin); p < end; p = svg.find("<" + tag + " ", p + 1)) {
+    const std::string close = tag == "text" ? "</text>" : "/>";
+    out.push_back(svg.substr(p, svg.find(close, p) - p + close.size()));
+  }
+  return out;
+}
+
+TEST(SvgPlotter, GridEveryTwoMillimetresWithLabelsAndAxisNames) {
+  // size 20 → step 2 (1-2-5 series, about ten lines); the area is −1..11 × −1..21
+  const std::string svg = plot({feed({0, 0, 0}, {10, 20, 0})});
+  EXPECT_TRUE(wellFormed(svg));
+  const auto grid = elements(svg, "grid", "line");
+  ASSERT_EQ(grid.size(), 6u + 11u) << svg;
+  EXPECT_EQ(grid[0], "<line x1=\"0\" y1=\"-21\" x2=\"0\" y2=\"1\"/>");
+  EXPECT_EQ(grid[5], "<line x1=\"10\" y1=\"-21\" x2=\"10\" y2=\"1\"/>");
+  EXPECT_EQ(grid[6], "<line x1=\"-1\" y1=\"0\" x2=\"11\" y2=\"0\"/>");
+  EXPECT_EQ(grid[16], "<line x1=\"-1\" y1=\"-20\" x2=\"11\" y2=\"-20\"/>");
+  // the axes through zero
+  EXPECT_EQ(elements(svg, "axes", "line"),
+            (std::vector<std::string>{"<line x1=\"0\" y1=\"-21\" x2=\"0\" y2=\"1\"/>",
+                                      "<line x1=\"-1\" y1=\"0\" x2=\"11\" y2=\"0\"/>"}));
+  const auto labels = elements(svg, "scale", "text");
+  ASSERT_EQ(labels.size(), 6u + 11u + 2u);
+  EXPECT_NE(svg.find("<text x=\"10\" y=\"1.55\" text-anchor=\"middle\">10</text>"),
+            std::string::npos);
+  EXPECT_NE(svg.find("<text x=\"-1.2\" y=\"-19.825\" text-anchor=\"end\">20</text>"),
+            std::string::npos);
+  EXPECT_NE(svg.find(">X (mm)</text>"), std::string::npos);
+  EXPECT_NE(svg.find("transform=\"rotate(-90 -2.1 -10)\">Y (mm)</text>"), std::string::npos);
+  // the grid lies behind the path
+  EXPECT_LT(svg.find("class=\"grid\""), svg.find("<path "));
+}
+
+TEST(SvgPlotter, GridStepFollowsTheOneTwoFiveSeries) {
+  struct Case {
+    double length;
+    const char* firstLabel; // the x label right of zero
+  };
+  // size/10 rounded up to 1, 2 or 5 times a power of ten
+  for (const Case& c : {Case{73, ">10<"}, Case{0.3, ">0.05<"}, Case{4, ">0.5<"},
+                        Case{1000, ">100<"}, Case{0.012, ">0.002<"}}) {
+    const std::string svg = plot({feed({0, 0, 0}, {c.length, 0, 0})});
+    const auto labels = elements(svg, "scale", "text");
+    ASSERT_GE(labels.size(), 3u) << c.length;
+    EXPECT_NE(labels[1].find(c.firstLabel), std::string::npos) << c.length << " " << labels[1];
+  }
+}
+
+TEST(SvgPlotter, MarksTheOriginAndKeepsItInTheDrawing) {
+  SvgOptions opt;
+  opt.origin = Vec3(-30, -40, 7);
+  opt.originLabel = "work <zero>";
+  const std::string svg = plot({feed({0, 0, 0}, {10, 20, 0})}, opt);
+  EXPECT_TRUE(wellFormed(svg));
+  // size 60 (y −40..20): font 1.5, marker radius 0.75, drawn at (−30, 40) in SVG coordinates
+  EXPECT_NE(svg.find("<circle cx=\"-30\" cy=\"40\" r=\"0.75\"/>"), std::string::npos) << svg;
+  EXPECT_NE(svg.find("work &lt;zero&gt;</text>"), std::string::npos);
+  // the drawing area reaches 3 (5 % of 60) beyond the origin
+  EXPECT_NE(svg.find("<line x1=\"-33\" y1=\"0\" x2=\"13\" y2=\"0\"/>"), std::string::npos);
+  opt.origin.reset();
+  EXPECT_EQ(plot({feed({0, 0, 0}, {10, 20, 0})}, opt).find("<circle"), std::string::npos);
+}
+
+TEST(SvgPlotter, XzFollowsTheLatheConvention) {
+  // Z to the right, X (a radius) up: a face from X10 Z−30 to X20 Z−40
+  SvgOptions opt;
+  opt.view = View::XZ;
+  const std::string svg = plot({feed({10, 0, -30}, {20, 0, -40})}, opt);
+  EXPECT_NE(svg.find("d=\"M-30 -10L-40 -20\""), std::string::npos) << svg;
+  EXPECT_NE(svg.find(">Z (mm)</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">X (mm, radius)</text>"), std::string::npos);
+}
+
+TEST(SvgPlotter, IsometricViewHasNoGrid) {
+  SvgOptions opt;
+  opt.view = View::Iso;
+  const std::string svg = plot(program(), opt);
+  EXPECT_EQ(svg.find("class=\"grid\""), std::string::npos);
+  EXPECT_EQ(svg.find("class=\"scale\""), std::string::npos);
+  EXPECT_NE(svg.find("class=\"origin\""), std::string::npos);
 }
 
 TEST(SvgPlotter, IsometricProjection) {
