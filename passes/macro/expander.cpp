@@ -414,7 +414,9 @@ bool Expander::flatten(const ir::Block& b, ir::Block& flat) {
 bool Expander::ncBlock(Frame& f, const ir::Block& b) {
   ir::Block flat;
   if (!flatten(b, flat)) return false;
-  if (!insideConfiguredCall()) { // inside one, configured codes are ordinary (§5.8 P3, P4)
+  // inside a configured call, configured codes are ordinary (§5.8 P3, P4); without
+  // parameters no code is configured
+  if (machine_.hasParameters() && !insideConfiguredCall()) {
     const std::size_t before = diags_.errorCount();
     if (auto c = configuredCall(flat)) return runConfiguredCall(f, b, flat, *c);
     if (diags_.errorCount() != before) return false;

@@ -41,6 +41,7 @@ inline constexpr const char* UnknownGCode = "GCX013";
 inline constexpr const char* ConflictingMCodes = "GCX014";
 inline constexpr const char* IncrementalNotAllowed = "GCX015";
 inline constexpr const char* TooManyDigits = "GCX016";
+inline constexpr const char* ExpressionTooDeep = "GCX017";
 // --- gcx: warnings
 inline constexpr const char* SignAlias = "GCXW01";
 inline constexpr const char* SkipLevelNine = "GCXW02";

@@ -136,6 +136,7 @@ public:
   double parameter(const std::string& key, double fallback) const {
     return setup_.parameter(key, fallback);
   }
+  bool hasParameters() const { return !setup_.parameters.empty(); }
 
 private:
   struct Offsets {
