@@ -1,5 +1,6 @@
 #include "dialects/nct/tree_builder.h"
 
+#include <climits>
 #include <fmt/format.h>
 
 #include "NCTLexer.h"
@@ -232,10 +233,17 @@ private:
     e.range = range(v);
     if (auto* nv = dynamic_cast<P::NumberedVariableContext*>(v)) {
       std::int64_t n = 0;
-      if (!wholeNumber(nv->NUMBER()->getText(), n)) {
-        b_.diags().error(
-            diag::code::SyntaxError, e.range,
-            fmt::format("variable number '{}' must be a whole number", nv->NUMBER()->getText()));
+      const std::string digits = nv->NUMBER()->getText();
+      if (!wholeNumber(digits, n)) {
+        const auto dot = digits.find('.');
+        if (dot == std::string::npos || digits.find_first_not_of('0', dot + 1) == std::string::npos)
+          b_.diags().error(diag::code::UndefinedVariable, e.range,
+                           fmt::format("#{} does not exist: variable numbers have at most 12 "
+                                       "digits",
+                                       digits));
+        else
+          b_.diags().error(diag::code::SyntaxError, e.range,
+                           fmt::format("variable number '{}' must be a whole number", digits));
         b_.fail();
       }
       e.kind = ir::ExprKind::Variable;
@@ -373,7 +381,7 @@ private:
                        "a loop number must be a whole number");
       b_.fail();
     }
-    return static_cast<int>(std::min<std::int64_t>(n, 1000000));
+    return static_cast<int>(std::min<std::int64_t>(n, INT_MAX)); // the checker reports > 3
   }
 
   std::optional<double> optionalNumber(antlr4::tree::TerminalNode* t) {
@@ -465,6 +473,21 @@ private:
       if (j < inner.size() && inner[j] == '[') {
         std::size_t close = inner.find(']', j);
         std::string fmtDigits = inner.substr(j + 1, close - j - 1);
+        // #v[cd]: c integer and d fraction digits, 0 < c+d < 16 (nct-macro.md §6)
+        const bool sane =
+            fmtDigits.size() <= 3 &&
+            fmtDigits.find_first_not_of("0123456789") == std::string::npos &&
+            (fmtDigits.size() < 2 || std::atoi(fmtDigits.substr(0, fmtDigits.size() - 1).c_str()) +
+                                             (fmtDigits.back() - '0') <
+                                         16);
+        if (!sane) {
+          b_.diags().error(
+              diag::code::DataOutOfRange, b_.range(start(node) + open + 1 + j, close - j + 1),
+              fmt::format("print format [{}]: c integer and d fraction digits need 0 < c+d < 16",
+                          fmtDigits));
+          b_.fail();
+          return;
+        }
         if (!fmtDigits.empty()) {
           item.intDigits = std::atoi(fmtDigits.substr(0, fmtDigits.size() - 1).c_str());
           item.fracDigits = fmtDigits.back() - '0';

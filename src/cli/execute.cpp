@@ -8,6 +8,7 @@
 #include <iostream>
 #include <unistd.h>
 
+#include "diag/codes.h"
 #include "machine/interpreter.h"
 #include "passes/check/static_checks.h"
 #include "passes/macro/expander.h"
@@ -74,8 +75,10 @@ int openWithSetup(Session& s, const std::string& file, const std::string& setupP
   if (setupPath.empty()) return Ok;
   auto loaded = machine::loadSetup(setupPath, s.sources(), s.diags());
   if (!loaded) {
+    const diag::Diagnostic* last = s.diags().lastError();
+    const bool unreadable = last && last->code == diag::code::SetupCannotRead;
     s.flushDiagnostics();
-    return ProgramErrors;
+    return unreadable ? UsageError : ProgramErrors; // a file that cannot be read is I/O
   }
   setup = std::move(*loaded);
   return Ok;

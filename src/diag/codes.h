@@ -46,6 +46,7 @@ inline constexpr const char* ExpressionTooDeep = "GCX017";
 inline constexpr const char* SignAlias = "GCXW01";
 inline constexpr const char* SkipLevelNine = "GCXW02";
 inline constexpr const char* StrayParen = "GCXW03";
+inline constexpr const char* LoneCarriageReturn = "GCXW04";
 
 // --- machine: alarms the manual numbers (nct.md §3)
 inline constexpr const char* MirrorWithTransform = "2001";
@@ -64,10 +65,11 @@ inline constexpr const char* EndWithoutM30 = "GCX038";
 // --- gcx: the macro pass
 inline constexpr const char* RunawayLoop = "GCX040";
 inline constexpr const char* TooManyBlocks = "GCX041";
-inline constexpr const char* TooManyMoves = "GCX043";    // --max-moves
-inline constexpr const char* OutputTooLarge = "GCX044";  // --max-output
-inline constexpr const char* ValueOutOfRange = "GCX045"; // not finite, or not writable
-inline constexpr const char* PathOutsideFolders = "GCX046"; // M98 <../x>, an absolute path
+inline constexpr const char* TooManyMoves = "GCX043";          // --max-moves
+inline constexpr const char* OutputTooLarge = "GCX044";        // --max-output
+inline constexpr const char* ValueOutOfRange = "GCX045";       // not finite, or not writable
+inline constexpr const char* PathOutsideFolders = "GCX046";    // M98 <../x>, an absolute path
+inline constexpr const char* FeedPerRevolutionAtS0 = "GCX047"; // G95 move, spindle speed 0
 inline constexpr const char* ParameterMissing = "NCTX11";
 
 // --- gcx: setup file (--setup FILE, src/machine/setup)

@@ -159,6 +159,10 @@ bool Interpreter::admitMotion(const motion::Event& e) {
                 finite ? fmt::format("the move reaches a coordinate or feed of magnitude 1e9 or "
                                      "more (machine frame, mm)")
                        : "the move's position or feed is not a finite number");
+  if (e.kind != Kind::Rapid && e.perRevolution && e.lead == 0 && speedProgrammed_ &&
+      state_.spindleSpeed == 0)
+    return fail(diag::code::FeedPerRevolutionAtS0, blockRange_,
+                "feed per revolution (G95) with the spindle speed S0: the move would never end");
   if (e.kind != Kind::Rapid && e.feed > 0 && e.feed < 1e-6)
     return fail(diag::code::ValueOutOfRange, blockRange_,
                 fmt::format("feed {:g} is too small to write (below 0.000001)", e.feed));
@@ -228,6 +232,7 @@ bool Interpreter::executeBlock(const ir::Block& block) {
   if (w.e) state_.lastE = w.e->number;
   if (w.h) state_.lastH = static_cast<int>(w.h->number);
   if (w.s) state_.lastS = w.s->number;
+  if (w.s) speedProgrammed_ = true;
   if (!w.m.empty()) state_.lastM = static_cast<int>(w.m.back()->number);
   for (const ir::Word* o : w.other)
     if (o->is('O')) state_.lastO = static_cast<int>(o->number);

@@ -264,7 +264,8 @@ private:
   int lockedFrom_ = 0;                 // the group-15 code a tapping cycle's G63 replaced
   bool deferCycles_ = false;
   bool ended_ = false;
-  bool stopped_ = false; // a limit or a value out of range stopped the run inside a block
+  bool speedProgrammed_ = false; // an S word was given (before it, the speed is unknown)
+  bool stopped_ = false;         // a limit or a value out of range stopped the run inside a block
   std::uint64_t moves_ = 0, maxMoves_ = UINT64_MAX;
   std::function<std::optional<std::string>()> stopCheck_;
   bool dataMode_ = false;
