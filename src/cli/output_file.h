@@ -17,7 +17,7 @@ bool outputBudgetExceeded();
 
 class CheckedFile : public std::streambuf {
 public:
-  CheckedFile() { buffer_.resize(1 << 16); }
+  CheckedFile() : buffer_(1 << 16) {}
   ~CheckedFile() override;
   CheckedFile(const CheckedFile&) = delete;
   CheckedFile& operator=(const CheckedFile&) = delete;
@@ -31,14 +31,18 @@ public:
   const std::string& error() const { return error_; }
 
 protected:
+  // no put area: every write comes here, so the budget counts each byte as it is written
   int_type overflow(int_type c) override;
+  std::streamsize xsputn(const char* s, std::streamsize n) override;
   int sync() override;
 
 private:
+  bool admit(std::size_t n);
   bool flushBuffer();
 
   int fd_ = -1;
   std::vector<char> buffer_;
+  std::size_t filled_ = 0;
   std::string error_;
 };
 
