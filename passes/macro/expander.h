@@ -19,7 +19,7 @@ namespace gcx::macro {
 
 /// Configurable limits: a runaway loop or recursion stops with a located error naming it.
 struct Limits {
-  std::uint64_t maxJumps = 2'000'000;   // backward jumps (END, GOTO, M99, L repeats) per run
+  std::uint64_t maxJumps = 1'500'000;   // backward jumps (END, GOTO, M99, L repeats) per run
   std::uint64_t maxBlocks = 20'000'000; // blocks executed per run
   int maxDepth = 16;                    // nested M98/G65 levels (nct-macro.md V5)
 };

@@ -18,7 +18,7 @@ struct CommonOptions {
   std::vector<std::string> libraryDirs; // --lib: where M98 P / G65 P look after the folder
   // Runaway limits (docs/limits.md): each stops a runaway within seconds on a small machine
   // while the bench programs (1,000,000 blocks, 100,000 G83 holes) run with them.
-  std::uint64_t maxJumps = 2'000'000;     // --max-jumps: backward jumps and L repeats of calls
+  std::uint64_t maxJumps = 1'500'000;     // --max-jumps: backward jumps and L repeats of calls
   std::uint64_t maxBlocks = 20'000'000;   // --max-blocks: blocks the expansion pass executes
   std::uint64_t maxMoves = 10'000'000;    // --max-moves: rapids, feeds, arc turns
   std::uint64_t maxOutput = 256ULL << 20; // --max-output: bytes of all outputs together
