@@ -138,6 +138,15 @@ void Interpreter::emit(motion::Event e) {
     stopped_ = true;
     return;
   }
+  // a dwell time, speed, tool or code of 1e9 or more is no value any output writes in full
+  if (!(std::fabs(e.value) < 1e9)) {
+    fail(diag::code::ValueOutOfRange, blockRange_,
+         fmt::format("the block's value {:g} (dwell time, speed, tool or code) is out of range: "
+                     "1e9 or more",
+                     e.value));
+    stopped_ = true;
+    return;
+  }
   sink_->event(e);
   if (stopCheck_)
     if (auto why = stopCheck_()) {
