@@ -544,12 +544,15 @@ bool checkBrackets(const front::RawBlock& raw, diag::Engine& diags) {
 // nested deeper than kMaxExpressionDepth is refused before the parser sees it, so no input can
 // exhaust the stack (of the parser, the IR builder or the evaluator, all bounded by the same
 // depth). A run of prefix operators counts one level each; a bracket adds the run before it.
+// A chain of binary operators parses flat but becomes a left-deep tree, one level per operator,
+// so a block holds at most kMaxOperators operators.
 constexpr int kMaxExpressionDepth = 64;
+constexpr int kMaxOperators = 1000;
 
 bool checkNestingDepth(const front::RawBlock& raw, const std::vector<Token*>& tokens,
                        diag::Engine& diags) {
   std::vector<int> outer; // the depth outside each open bracket
-  int depth = 0, prefixRun = 0;
+  int depth = 0, prefixRun = 0, operators = 0;
   for (Token* t : tokens) {
     if (t->getChannel() != Token::DEFAULT_CHANNEL) continue;
     const auto type = t->getType();
@@ -557,6 +560,13 @@ bool checkNestingDepth(const front::RawBlock& raw, const std::vector<Token*>& to
                         type == P::SIN || type == P::COS || type == P::TAN || type == P::ASIN ||
                         type == P::ACOS || type == P::ATAN || type == P::SQRT || type == P::EXP ||
                         type == P::LN || type == P::ABS || type == P::FIX || type == P::FUP;
+    const bool binary = type == P::STAR || type == P::SLASH || type == P::AND || type == P::MOD ||
+                        type == P::OR || type == P::XOR;
+    if (((prefix && type != P::HASH) || binary) && ++operators > kMaxOperators) {
+      diags.error(diag::code::ExpressionTooDeep, raw.rangeAt(t->getStartIndex(), 1),
+                  fmt::format("more than {} operators in one block", kMaxOperators));
+      return false;
+    }
     if (type == P::LBRACK) {
       outer.push_back(depth);
       depth += prefixRun + 1;

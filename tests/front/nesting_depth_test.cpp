@@ -54,9 +54,18 @@ TEST(NestingDepth, SignsInsideBracketsAddUp) {
 }
 
 TEST(NestingDepth, LongFlatExpressionIsNotDeep) {
-  // a sum of 10 000 terms recurses once per term at most: no nesting error
-  const Parsed p = parseNct("#1=1" + repeat("+[1]", 10000) + "\nM30\n");
+  // a sum of 900 bracketed terms nests one level deep: no nesting error
+  const Parsed p = parseNct("#1=1" + repeat("+[1]", 900) + "\nM30\n");
   EXPECT_TRUE(p.errors().empty()) << p.rendered();
+}
+
+TEST(NestingDepth, AThousandOperatorsInOneBlock) {
+  // a chain of binary operators becomes a left-deep tree: 1000 operators, not one more
+  const Parsed ok = parseNct("#1=1" + repeat("+1", 1000) + "\nM30\n");
+  EXPECT_TRUE(ok.errors().empty()) << ok.rendered();
+  const Parsed p = parseNct("#1=1" + repeat("*1", 400000) + "\nM30\n");
+  ASSERT_FALSE(p.errors().empty());
+  EXPECT_EQ(p.errors().front(), "1:2005 GCX017") << p.rendered();
 }
 
 TEST(NestingDepth, EveryBlockIsChecked) {
