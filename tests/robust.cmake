@@ -87,3 +87,4 @@ gcx_robust(divide_by_zero_without_variables 1 "divide_by_zero_no_macro.nct:1:6: 
 gcx_robust(lone_cr_hint 1 "lone_cr.nct:1:6: warning: carriage return without a line feed: blocks end at LF; a file with CR-only line ends (old Macintosh) must be converted to LF or CR LF [GCXW04]" check ${ROBUST}/lone_cr.nct)
 gcx_robust(dwell_huge 1 "dwell_huge.nct:1:1: error: the block's value 4.60461e+299 (dwell time, speed, tool or code) is out of range: 1e9 or more [GCX045]" expand ${ROBUST}/dwell_huge.nct --to canonical)
 gcx_robust(long_operator_chain 1 "long_operator_chain.nct:1:2005: error: more than 1000 operators in one block [GCX017]" run ${ROBUST}/long_operator_chain.nct)
+gcx_robust(goto_huge 1 "goto_huge.nct:2:1: error: block N1.01423e+304 not found: block numbers are 1-99999999 [2125]" run ${ROBUST}/goto_huge.nct)

@@ -231,8 +231,13 @@ bool Expander::jumpTo(Frame& f, const ir::Expr& label, const SourceRange& where)
   if (v->vacant)
     return fail(diag::code::BlockNotFound, where, "GOTO to a vacant block number (§2.5 rule 5)");
   const double n = roundHalfAway(v->number);
-  const std::size_t target = f.program->find(static_cast<std::int64_t>(n), f.pc + 1);
-  if (target == LoadedProgram::npos || n <= 0)
+  const bool inRange = n >= 1 && n <= 99999999; // N numbers (nct-macro.md §1.2); no int overflow
+  if (!inRange && n > 0)
+    return fail(diag::code::BlockNotFound, where,
+                fmt::format("block N{:g} not found: block numbers are 1-99999999", n));
+  const std::size_t target =
+      inRange ? f.program->find(static_cast<std::int64_t>(n), f.pc + 1) : LoadedProgram::npos;
+  if (target == LoadedProgram::npos)
     return fail(diag::code::BlockNotFound, where,
                 fmt::format("block N{} not found", emit::formatNumber(n)));
   if (target <= f.pc && ++jumps_ > limits_.maxJumps)
