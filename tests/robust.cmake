@@ -30,11 +30,11 @@ gcx_robust(m99_repeat_runaway 1 "O7001.nct:3:1: error: O7001 (M98 P7001) repeate
 gcx_robust(m98_repeat_runaway 1 "O7002.nct:3:1: error: O7002 (M98 P7002) repeated more than 1000 times by its L count" run ${ROBUST}/m98_repeat_runaway.nct --max-jumps 1000)
 gcx_robust(g65_repeat_runaway 1 "O7002.nct:3:1: error: O7002 (G65 P7002) repeated more than 1000 times by its L count" run ${ROBUST}/g65_repeat_runaway.nct --max-jumps 1000)
 gcx_robust(goto_runaway 1 "goto_runaway.nct:2:1: error: more than 1000 backward jumps: runaway loop (GOTO N1; exceeded --max-jumps 1000; raise it with --max-jumps N) [GCX040]" run ${ROBUST}/goto_runaway.nct --max-jumps 1000)
-gcx_robust(drill_repeat_runaway 1 "drill_repeat_runaway.nct:2:1: error: more than 1000 moves (each arc turn counts): exceeded --max-moves 1000; raise it with --max-moves N [GCX043]" run ${ROBUST}/drill_repeat_runaway.nct --max-moves 1000)
+gcx_robust(drill_repeat_runaway 1 "drill_repeat_runaway.nct:2:1: error: more than 1000 moves beyond one a block (cycles, repeats, arc turns): exceeded --max-moves 1000; raise it with --max-moves N [GCX043]" run ${ROBUST}/drill_repeat_runaway.nct --max-moves 1000)
 gcx_robust(blocks_runaway 1 "blocks_runaway.nct:4:1: error: more than 3 blocks executed: is this an endless loop? (exceeded --max-blocks 3; raise it with --max-blocks N) [GCX041]" run ${ROBUST}/blocks_runaway.nct --max-blocks 3)
 # 3. output amplification: L turns count as moves (default limit, stops before writing), and
 # the bytes of all outputs are bounded
-gcx_robust(arc_turns_runaway 1 "arc_turns_runaway.nct:2:1: error: more than 10000000 moves (each arc turn counts): exceeded --max-moves 10000000; raise it with --max-moves N [GCX043]" expand ${ROBUST}/arc_turns_runaway.nct --to canonical)
+gcx_robust(arc_turns_runaway 1 "arc_turns_runaway.nct:2:1: error: more than 10000000 moves beyond one a block (cycles, repeats, arc turns): exceeded --max-moves 10000000; raise it with --max-moves N [GCX043]" expand ${ROBUST}/arc_turns_runaway.nct --to canonical)
 gcx_robust(spiral_output_size 1 "spiral_output.nct:2:1: error: the output exceeded --max-output 10240 bytes; raise it with --max-output N [GCX044]" expand ${ROBUST}/spiral_output.nct --to canonical --max-output 10k)
 gcx_robust(print_output_size 1 "print_output.nct:4:1: error: the output exceeded --max-output 10240 bytes; raise it with --max-output N [GCX044]" run ${ROBUST}/print_output.nct --max-output 10k --print ${CMAKE_CURRENT_BINARY_DIR}/robust_print.txt)
 
@@ -88,3 +88,7 @@ gcx_robust(lone_cr_hint 1 "lone_cr.nct:1:6: warning: carriage return without a l
 gcx_robust(dwell_huge 1 "dwell_huge.nct:1:1: error: the block's value 4.60461e+299 (dwell time, speed, tool or code) is out of range: 1e9 or more [GCX045]" expand ${ROBUST}/dwell_huge.nct --to canonical)
 gcx_robust(long_operator_chain 1 "long_operator_chain.nct:1:2005: error: more than 1000 operators in one block [GCX017]" run ${ROBUST}/long_operator_chain.nct)
 gcx_robust(goto_huge 1 "goto_huge.nct:2:1: error: block N1.01423e+304 not found: block numbers are 1-99999999 [2125]" run ${ROBUST}/goto_huge.nct)
+# --max-moves bounds what a block adds beyond its own first move: a plain program of any length
+# runs under the smallest limit, while a cycle's holes and passes count (docs/limits.md)
+gcx_robust(max_moves_plain_program_runs 0 "" run ${ROBUST}/plain_moves.nct --max-moves 1)
+gcx_robust(max_moves_cycle_holes_count 1 "drill_two_holes.nct:2:1: error: more than 1 moves beyond one a block (cycles, repeats, arc turns): exceeded --max-moves 1; raise it with --max-moves N [GCX043]" run ${ROBUST}/drill_two_holes.nct --max-moves 1)

@@ -18,13 +18,16 @@ struct CommonOptions {
   std::vector<std::string> libraryDirs; // --lib: where M98 P / G65 P look after the folder
   // Runaway limits (docs/limits.md): each stops a runaway within seconds on a small machine
   // while the bench programs (1,000,000 blocks, 100,000 G83 holes) run with them.
-  std::uint64_t maxJumps = 1'500'000;     // --max-jumps: backward jumps and L repeats of calls
-  std::uint64_t maxBlocks = 20'000'000;   // --max-blocks: blocks the expansion pass executes
-  std::uint64_t maxMoves = 10'000'000;    // --max-moves: rapids, feeds, arc turns
-  std::uint64_t maxOutput = 256ULL << 20; // --max-output: bytes of all outputs together
-  int maxDepth = 16;                      // --max-depth: nested calls (the manual's 16)
-  std::string printFile;                  // --print: DPRNT output (default: standard output)
-  bool fanucVacantOrder = false;          // --vacant-order fanuc (nct-macro.md §12 Q1)
+  std::uint64_t maxJumps = 1'500'000;   // --max-jumps: backward jumps and L repeats of calls
+  std::uint64_t maxBlocks = 20'000'000; // --max-blocks: blocks the expansion pass executes
+  std::uint64_t maxMoves = 10'000'000;  // --max-moves: rapids, feeds, arc turns
+  // --max-output: bytes of all outputs together; 0 (the default) is automatic: 256 MiB, or 32
+  // bytes written per byte of the main program when that is more, so a long CAM program is never
+  // refused while an amplifying loop or repeat still stops within seconds
+  std::uint64_t maxOutput = 0;
+  int maxDepth = 16;             // --max-depth: nested calls (the manual's 16)
+  std::string printFile;         // --print: DPRNT output (default: standard output)
+  bool fanucVacantOrder = false; // --vacant-order fanuc (nct-macro.md §12 Q1)
 };
 
 struct ExpandOptions {

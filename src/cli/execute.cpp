@@ -1,5 +1,6 @@
 #include "cli/execute.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
@@ -85,6 +86,14 @@ int openWithSetup(Session& s, const std::string& file, const std::string& setupP
   return Ok;
 }
 
+namespace {
+std::uint64_t programSize(Session& s) {
+  std::error_code ec;
+  const std::uintmax_t n = std::filesystem::file_size(s.path(), ec);
+  return ec ? 0 : static_cast<std::uint64_t>(n);
+}
+} // namespace
+
 macro::Limits expansionLimits(const CommonOptions& opt) {
   macro::Limits limits;
   limits.maxJumps = opt.maxJumps;
@@ -93,9 +102,16 @@ macro::Limits expansionLimits(const CommonOptions& opt) {
   return limits;
 }
 
-void limitMachine(machine::Interpreter& interp, const CommonOptions& opt) {
+std::uint64_t outputBudgetFor(const CommonOptions& opt, std::uint64_t programBytes) {
+  if (opt.maxOutput != 0) return opt.maxOutput;
+  constexpr std::uint64_t floor = 256ULL << 20, perProgramByte = 32;
+  return std::max(floor, programBytes * perProgramByte);
+}
+
+void limitMachine(machine::Interpreter& interp, const CommonOptions& opt,
+                  std::uint64_t programBytes) {
   interp.setMaxMoves(opt.maxMoves);
-  setOutputBudget(opt.maxOutput);
+  setOutputBudget(outputBudgetFor(opt, programBytes));
   interp.setStopCheck([]() -> std::optional<std::string> {
     if (!outputBudgetExceeded()) return std::nullopt;
     return fmt::format("the output exceeded --max-output {} bytes; raise it with --max-output N",
@@ -131,7 +147,7 @@ bool expandProgram(Session& s, const CommonOptions& opt, const machine::Setup& s
   motion::Sink& sink = framed.sink();
   machine::Interpreter interp(s.dialect().profile(), setup, sink, s.diags());
   framed.bind(interp);
-  limitMachine(interp, opt);
+  limitMachine(interp, opt, programSize(s));
   macro::SystemVariables system(interp, s.diags());
   macro::Expander expander(library, interp, system, s.diags(), expansionLimits(opt));
   expander.setPrintOutput(&printOut);
@@ -150,7 +166,7 @@ bool executeProgram(Session& s, const CommonOptions& opt, const machine::Setup& 
   motion::Sink& sink = framed.sink();
   machine::Interpreter interp(s.dialect().profile(), setup, sink, s.diags());
   framed.bind(interp);
-  limitMachine(interp, opt);
+  limitMachine(interp, opt, programSize(s));
   ir::Block block;
   bool ok = true;
   while (ok && s.source().next(block)) {

@@ -39,7 +39,11 @@ motion::Vec3 initialWorkOrigin(Session& s, const machine::Setup& setup);
 /// The run limits of the options: --max-jumps, --max-blocks, --max-depth for the expansion pass;
 /// --max-moves and --max-output for the machine, which stops at the block that crosses them.
 macro::Limits expansionLimits(const CommonOptions& opt);
-void limitMachine(machine::Interpreter& interp, const CommonOptions& opt);
+/// `programBytes` is the size of the main program file (for the automatic --max-output).
+void limitMachine(machine::Interpreter& interp, const CommonOptions& opt,
+                  std::uint64_t programBytes);
+/// The --max-output budget in bytes for a main program of `programBytes` bytes.
+std::uint64_t outputBudgetFor(const CommonOptions& opt, std::uint64_t programBytes);
 
 /// Writes through a temporary file that replaces `path` only on success (never a partial file);
 /// an empty path means standard output. Every write, the flush and the close are checked.

@@ -1,6 +1,8 @@
 // gcx expand FILE --to canonical: the flat RS274/NGC program of the program's motion.
 // gcx expand FILE --to nct --expand macros,subprograms: the program with macro statements,
 // variables and calls flattened into plain NCT blocks, canned cycles kept.
+#include <filesystem>
+
 #include "cli/commands.h"
 #include "cli/execute.h"
 #include "dialects/nct/printer.h"
@@ -35,7 +37,9 @@ int expandToNct(Session& s, const ExpandOptions& opt, const machine::Setup& setu
   DiscardMotion discard;
   machine::Interpreter interp(s.dialect().profile(), setup, discard, s.diags());
   interp.setDeferCycles(true);
-  limitMachine(interp, opt.common);
+  std::error_code sizeError;
+  const std::uintmax_t programBytes = std::filesystem::file_size(s.path(), sizeError);
+  limitMachine(interp, opt.common, sizeError ? 0 : programBytes);
   macro::SystemVariables system(interp, s.diags());
   macro::Expander expander(library, interp, system, s.diags(), expansionLimits(opt.common));
   expander.setPrintOutput(&print.stream());

@@ -42,7 +42,8 @@ int main(int argc, char** argv) {
                     "moves (rapids, feeds, arc turns) before an error")
         ->check(atLeastOne);
     cmd->add_option("--max-output", common.maxOutput,
-                    "bytes written (all outputs together) before an error; 100M, 2G ...")
+                    "bytes written (all outputs together) before an error; 100M, 2G ... (default: "
+                    "256M, or 32 bytes per byte of the program when more)")
         ->check(atLeastOne)
         ->transform(CLI::AsSizeValue(false));
     cmd->add_option("--max-depth", common.maxDepth, "nested subprogram and macro calls")

@@ -179,13 +179,19 @@ bool Interpreter::admitMotion(const motion::Event& e) {
   std::uint64_t count = 1;
   if (e.kind == Kind::Arc)
     count = std::fabs(e.startRadius - e.endRadius) > 1e-9
-                ? motion::arcSegments(motion::ArcGeometry(e), motion::kDefaultChordTolerance)
+                ? static_cast<std::uint64_t>(std::min(
+                      motion::arcChordCount(motion::ArcGeometry(e), motion::kDefaultChordTolerance),
+                      1e18))
                 : 1 + static_cast<std::uint64_t>(std::max(0, e.turns));
-  moves_ += count;
+  // A block's first move is the program's own; what a block adds beyond it (cycle holes and
+  // passes, arc turns, repeats) is amplification, and that is what the limit bounds. A plain
+  // program of any length therefore runs; its size bounds its moves.
+  moves_ += count - (blockMoves_ == 0 ? 1 : 0);
+  blockMoves_ += count;
   if (moves_ > maxMoves_)
     return fail(diag::code::TooManyMoves, blockRange_,
-                fmt::format("more than {} moves (each arc turn counts): exceeded --max-moves "
-                            "{}; raise it with --max-moves N",
+                fmt::format("more than {} moves beyond one a block (cycles, repeats, arc turns): "
+                            "exceeded --max-moves {}; raise it with --max-moves N",
                             maxMoves_, maxMoves_));
   return true;
 }
@@ -211,6 +217,7 @@ bool Interpreter::execute(const ir::Block& block, const motion::Provenance& from
   if (ended_ || stopped_) return false;
   from_ = from;
   blockRange_ = block.range;
+  blockMoves_ = 0;
   return executeBlock(block) && !stopped_;
 }
 

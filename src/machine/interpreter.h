@@ -266,7 +266,8 @@ private:
   bool ended_ = false;
   bool speedProgrammed_ = false; // an S word was given (before it, the speed is unknown)
   bool stopped_ = false;         // a limit or a value out of range stopped the run inside a block
-  std::uint64_t moves_ = 0, maxMoves_ = UINT64_MAX;
+  std::uint64_t moves_ = 0, maxMoves_ = UINT64_MAX; // moves beyond the first of each block
+  std::uint64_t blockMoves_ = 0;                    // moves of the block being executed
   std::function<std::optional<std::string>()> stopCheck_;
   bool dataMode_ = false;
 };

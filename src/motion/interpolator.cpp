@@ -14,15 +14,19 @@ void checkTolerance(double tol) {
 }
 } // namespace
 
-std::size_t arcSegments(const ArcGeometry& arc, double tol) {
+double arcChordCount(const ArcGeometry& arc, double tol) {
   checkTolerance(tol);
   // A chord over Δθ lies within Δθ²/8 · max|p''| of the curve (linear interpolation error,
   // which also bounds helices and spirals); for a circle this is just below the sagitta.
   double step = std::numbers::pi / 2;
   if (const double m = arc.maxSecondDerivative(); m > 0)
     step = std::min(step, std::sqrt(8 * tol / m));
-  const double n = std::ceil(arc.sweep() / step);
-  return static_cast<std::size_t>(std::clamp(n, 1.0, static_cast<double>(kMaxArcSegments)));
+  return std::max(1.0, std::ceil(arc.sweep() / step));
+}
+
+std::size_t arcSegments(const ArcGeometry& arc, double tol) {
+  return static_cast<std::size_t>(
+      std::min(arcChordCount(arc, tol), static_cast<double>(kMaxArcSegments)));
 }
 
 void appendArcPoints(const ArcGeometry& arc, double tol, std::vector<Vec3>& out) {

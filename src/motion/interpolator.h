@@ -12,6 +12,8 @@ namespace gcx::motion {
 /// Segments (of equal swept angle) needed for tolerance tol > 0. At least one per quarter turn,
 /// so an arc looks like one even at a coarse tolerance; at most kMaxArcSegments.
 std::size_t arcSegments(const ArcGeometry& arc, double tol);
+/// The number of chords the tolerance asks for, without the cap (what a move limit counts).
+double arcChordCount(const ArcGeometry& arc, double tol);
 inline constexpr std::size_t kMaxArcSegments = 10'000'000;
 /// The chord tolerance (mm) at which canonical output writes spirals as lines.
 inline constexpr double kDefaultChordTolerance = 1e-3;

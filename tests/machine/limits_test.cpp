@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 #include <sstream>
 
+#include "cli/commands.h"
+#include "cli/execute.h"
 #include "dialects/nct/reader.h"
 #include "passes/macro/expander.h"
 #include "support/run_support.h"
@@ -51,9 +53,13 @@ TEST(Limits, M99InTheMainProgramCountsAsAJump) {
   EXPECT_EQ(runMain(loop, jumps(1)).errors, V{"O0001.nct:3:1 GCX040"});
 }
 
-TEST(Limits, DefaultJumpLimitIsTenMillion) {
-  EXPECT_EQ(macro::Limits{}.maxJumps, 10'000'000u);
-  EXPECT_EQ(macro::Limits{}.maxBlocks, 200'000'000u);
+// docs/limits.md: the defaults, the same for the library and the command line
+TEST(Limits, DefaultsAreTheDocumentedOnes) {
+  EXPECT_EQ(macro::Limits{}.maxJumps, 1'500'000u);
+  EXPECT_EQ(macro::Limits{}.maxBlocks, 20'000'000u);
+  EXPECT_EQ(cli::CommonOptions{}.maxJumps, macro::Limits{}.maxJumps);
+  EXPECT_EQ(cli::CommonOptions{}.maxBlocks, macro::Limits{}.maxBlocks);
+  EXPECT_EQ(cli::CommonOptions{}.maxMoves, 10'000'000u);
 }
 
 // --- executed blocks ---------------------------------------------------------------------------
@@ -174,3 +180,13 @@ TEST(Limits, ErrorsUpToTheLimitAreAllReportedThenCollectingStops) {
 
 } // namespace
 } // namespace gcx::test
+
+// docs/limits.md: the automatic --max-output grows with the main program, so a long CAM program
+// is never refused for its size; an explicit value is taken as it is
+TEST(Limits, OutputBudgetIsAutomaticUnlessGiven) {
+  gcx::cli::CommonOptions opt;
+  EXPECT_EQ(gcx::cli::outputBudgetFor(opt, 1000), 256ULL << 20);
+  EXPECT_EQ(gcx::cli::outputBudgetFor(opt, 100'000'000), 3'200'000'000ULL);
+  opt.maxOutput = 10240;
+  EXPECT_EQ(gcx::cli::outputBudgetFor(opt, 100'000'000), 10240u);
+}
