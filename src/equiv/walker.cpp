@@ -5,7 +5,7 @@
 #include <array>
 #include <cmath>
 
-#include "oracle/compare.h"
+#include "motion/describe.h"
 
 namespace gcx::equiv {
 
@@ -181,7 +181,7 @@ private:
 };
 
 SideAt sideAt(const Event& e) {
-  return SideAt{true, e, oracle::describe(e)};
+  return SideAt{true, e, motion::describeEvent(e)};
 }
 
 const char* axisName(int i) {
@@ -246,11 +246,13 @@ std::string stateDifference(const MotionState& a, const MotionState& b) {
 /// Empty if two discrete events agree, else what differs.
 std::string eventDifference(const Event& a, const Event& b) {
   if (a.kind != b.kind)
-    return fmt::format("events differ: {} vs {}", oracle::describe(a), oracle::describe(b));
+    return fmt::format("events differ: {} vs {}", motion::describeEvent(a),
+                       motion::describeEvent(b));
   switch (a.kind) {
   case Kind::Dwell:
     if (a.perRevolution != b.perRevolution || !close(a.value, b.value, 1e-4))
-      return fmt::format("dwell differs: {} vs {}", oracle::describe(a), oracle::describe(b));
+      return fmt::format("dwell differs: {} vs {}", motion::describeEvent(a),
+                         motion::describeEvent(b));
     return {};
   case Kind::Stop:
     if (a.optional != b.optional)
@@ -306,7 +308,7 @@ private:
     if (x.type == Side::Type::End)
       summary += fmt::format("; {} ended", xIsA ? "A" : "B");
     else if (x.type == Side::Type::Discrete)
-      summary += fmt::format(" ({} has {} next)", xIsA ? "A" : "B", oracle::describe(x.event));
+      summary += fmt::format(" ({} has {} next)", xIsA ? "A" : "B", motion::describeEvent(x.event));
     if (xIsA)
       diverge(DivergenceKind::Geometry, summary, d.norm(), xEnd, xs, ys);
     else
@@ -356,7 +358,7 @@ private:
     const Event& ev = aEvent ? a_.event : b_.event;
     const Side& mover = aEvent ? b_ : a_;
     const std::string why = fmt::format("{} has {} where {} moves", aEvent ? "A" : "B",
-                                        oracle::describe(ev), aEvent ? "B" : "A");
+                                        motion::describeEvent(ev), aEvent ? "B" : "A");
     diverge(DivergenceKind::Event, why, 0, mover.piece->start(),
             aEvent ? sideAt(ev) : sideAt(mover.piece->event()),
             aEvent ? sideAt(mover.piece->event()) : sideAt(ev));
