@@ -1,5 +1,6 @@
 #include "dialects/nct/tree_builder.h"
 
+#include <climits>
 #include <fmt/format.h>
 
 #include "NCTLexer.h"
@@ -232,10 +233,17 @@ private:
     e.range = range(v);
     if (auto* nv = dynamic_cast<P::NumberedVariableContext*>(v)) {
       std::int64_t n = 0;
-      if (!wholeNumber(nv->NUMBER()->getText(), n)) {
-        b_.diags().error(
-            diag::code::SyntaxError, e.range,
-            fmt::format("variable number '{}' must be a whole number", nv->NUMBER()->getText()));
+      const std::string digits = nv->NUMBER()->getText();
+      if (!wholeNumber(digits, n)) {
+        const auto dot = digits.find('.');
+        if (dot == std::string::npos || digits.find_first_not_of('0', dot + 1) == std::string::npos)
+          b_.diags().error(diag::code::UndefinedVariable, e.range,
+                           fmt::format("#{} does not exist: variable numbers have at most 12 "
+                                       "digits",
+                                       digits));
+        else
+          b_.diags().error(diag::code::SyntaxError, e.range,
+                           fmt::format("variable number '{}' must be a whole number", digits));
         b_.fail();
       }
       e.kind = ir::ExprKind::Variable;
@@ -373,7 +381,7 @@ private:
                        "a loop number must be a whole number");
       b_.fail();
     }
-    return static_cast<int>(std::min<std::int64_t>(n, 1000000));
+    return static_cast<int>(std::min<std::int64_t>(n, INT_MAX)); // the checker reports > 3
   }
 
   std::optional<double> optionalNumber(antlr4::tree::TerminalNode* t) {
@@ -465,6 +473,21 @@ private:
       if (j < inner.size() && inner[j] == '[') {
         std::size_t close = inner.find(']', j);
         std::string fmtDigits = inner.substr(j + 1, close - j - 1);
+        // #v[cd]: c integer and d fraction digits, 0 < c+d < 16 (nct-macro.md §6)
+        const bool sane =
+            fmtDigits.size() <= 3 &&
+            fmtDigits.find_first_not_of("0123456789") == std::string::npos &&
+            (fmtDigits.size() < 2 || std::atoi(fmtDigits.substr(0, fmtDigits.size() - 1).c_str()) +
+                                             (fmtDigits.back() - '0') <
+                                         16);
+        if (!sane) {
+          b_.diags().error(
+              diag::code::DataOutOfRange, b_.range(start(node) + open + 1 + j, close - j + 1),
+              fmt::format("print format [{}]: c integer and d fraction digits need 0 < c+d < 16",
+                          fmtDigits));
+          b_.fail();
+          return;
+        }
         if (!fmtDigits.empty()) {
           item.intDigits = std::atoi(fmtDigits.substr(0, fmtDigits.size() - 1).c_str());
           item.fracDigits = fmtDigits.back() - '0';
@@ -513,6 +536,57 @@ bool checkBrackets(const front::RawBlock& raw, diag::Engine& diags) {
     diags.error(diag::code::RightBracketNotFound, raw.rangeAt(open.front(), 1),
                 "'[' is not closed by ']'");
     return false;
+  }
+  return true;
+}
+
+// The grammar recurses once per bracket, sign, function and NOT of an expression; a block
+// nested deeper than kMaxExpressionDepth is refused before the parser sees it, so no input can
+// exhaust the stack (of the parser, the IR builder or the evaluator, all bounded by the same
+// depth). A run of prefix operators counts one level each; a bracket adds the run before it.
+// A chain of binary operators parses flat but becomes a left-deep tree, one level per operator,
+// so a block holds at most kMaxOperators operators.
+constexpr int kMaxExpressionDepth = 64;
+constexpr int kMaxOperators = 1000;
+
+bool checkNestingDepth(const front::RawBlock& raw, const std::vector<Token*>& tokens,
+                       diag::Engine& diags) {
+  std::vector<int> outer; // the depth outside each open bracket
+  int depth = 0, prefixRun = 0, operators = 0;
+  for (Token* t : tokens) {
+    if (t->getChannel() != Token::DEFAULT_CHANNEL) continue;
+    const auto type = t->getType();
+    const bool prefix = type == P::PLUS || type == P::MINUS || type == P::NOT || type == P::HASH ||
+                        type == P::SIN || type == P::COS || type == P::TAN || type == P::ASIN ||
+                        type == P::ACOS || type == P::ATAN || type == P::SQRT || type == P::EXP ||
+                        type == P::LN || type == P::ABS || type == P::FIX || type == P::FUP;
+    const bool binary = type == P::STAR || type == P::SLASH || type == P::AND || type == P::MOD ||
+                        type == P::OR || type == P::XOR;
+    if (((prefix && type != P::HASH) || binary) && ++operators > kMaxOperators) {
+      diags.error(diag::code::ExpressionTooDeep, raw.rangeAt(t->getStartIndex(), 1),
+                  fmt::format("more than {} operators in one block", kMaxOperators));
+      return false;
+    }
+    if (type == P::LBRACK) {
+      outer.push_back(depth);
+      depth += prefixRun + 1;
+      prefixRun = 0;
+    } else if (type == P::RBRACK) {
+      depth = outer.empty() ? 0 : outer.back();
+      if (!outer.empty()) outer.pop_back();
+      prefixRun = 0;
+    } else if (prefix) {
+      ++prefixRun;
+    } else {
+      prefixRun = 0;
+    }
+    if (depth + prefixRun > kMaxExpressionDepth) {
+      diags.error(diag::code::ExpressionTooDeep, raw.rangeAt(t->getStartIndex(), 1),
+                  fmt::format("expression nested deeper than {} levels (brackets, signs, "
+                              "functions)",
+                              kMaxExpressionDepth));
+      return false;
+    }
   }
   return true;
 }
@@ -646,6 +720,8 @@ bool GrammarParser::parse(const front::RawBlock& raw, ir::Block& out, diag::Engi
   m.parser.getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(
       antlr4::atn::PredictionMode::SLL);
   m.parser.setErrorHandler(std::make_shared<antlr4::BailErrorStrategy>());
+  m.tokens.fill(); // the lexer does not recurse; the depth is checked before the parser does
+  if (!m.first.set && !checkNestingDepth(raw, m.tokens.getTokens(), diags)) return false;
   P::BlockContext* tree = nullptr;
   try {
     tree = m.parser.block();

@@ -33,6 +33,7 @@ const LoadedProgram* ProgramLibrary::load(const std::string& path) {
     diags_.error(diag::code::CannotRead, {}, fmt::format("{}: cannot open", path));
     return nullptr;
   }
+  if (loaded_.empty()) mainFolder_ = fs::path(key).parent_path().string();
   auto prog = std::make_unique<LoadedProgram>();
   prog->path = path;
   prog->file = sources_.addFile(path);
@@ -94,7 +95,7 @@ std::string ProgramLibrary::locate(const std::vector<std::string>& candidates,
       if (!fs::is_directory(folder, ec)) continue;
       for (const auto& entry : fs::directory_iterator(folder, ec)) {
         const std::string f = entry.path().filename().string();
-        if (f.size() == leaf.size() &&
+        if (entry.is_regular_file(ec) && f.size() == leaf.size() &&
             std::equal(f.begin(), f.end(), leaf.begin(), [](char a, char b) {
               return std::tolower(static_cast<unsigned char>(a)) ==
                      std::tolower(static_cast<unsigned char>(b));
@@ -109,11 +110,32 @@ std::string ProgramLibrary::locate(const std::vector<std::string>& candidates,
 const LoadedProgram* ProgramLibrary::findFile(const std::vector<std::string>& candidates,
                                               const LoadedProgram& caller, const SourceRange& where,
                                               const std::string& what) {
-  if (std::string path = locate(candidates, caller); !path.empty()) return load(path);
+  if (std::string path = locate(candidates, caller); !path.empty()) {
+    if (!insideRoots(path)) {
+      diags_.error(diag::code::PathOutsideFolders, where,
+                   fmt::format("program {} lies outside the program's folder and the --lib "
+                               "folders; add its folder with --lib DIR",
+                               what));
+      return nullptr;
+    }
+    return load(path);
+  }
   diags_.error(diag::code::ProgramNotFound, where,
                fmt::format("program {} not found next to {} or in the library folders", what,
                            fs::path(caller.path).filename().string()));
   return nullptr;
+}
+
+bool ProgramLibrary::insideRoots(const std::string& path) const {
+  std::error_code ec;
+  const fs::path file = fs::weakly_canonical(path, ec);
+  const auto within = [&](const std::string& root) {
+    const fs::path r = fs::weakly_canonical(root.empty() ? "." : root, ec);
+    const auto [rootEnd, fileIt] = std::mismatch(r.begin(), r.end(), file.begin(), file.end());
+    return rootEnd == r.end() || (std::next(rootEnd) == r.end() && rootEnd->empty());
+  };
+  if (within(mainFolder_)) return true;
+  return std::any_of(libraryDirs_.begin(), libraryDirs_.end(), within);
 }
 
 std::vector<std::string> ProgramLibrary::numberNames(std::int64_t number,

@@ -57,6 +57,9 @@ private:
   SourceManager& sources_;
   diag::Engine& diags_;
   std::vector<std::string> libraryDirs_;
+  std::string mainFolder_; // the first program's folder: with --lib, where calls may look
+  /// Whether a located file lies inside the main program's folder or a --lib folder.
+  bool insideRoots(const std::string& path) const;
   std::unordered_map<std::string, std::unique_ptr<LoadedProgram>> loaded_;
 };
 

@@ -142,8 +142,8 @@ void CanonicalEmitter::event(const motion::Event& e) {
                                        : "M5"),
          e);
     return;
-  case Kind::SpindleOrient:
-    line("M19", e);
+  case Kind::SpindleOrient: // LinuxCNC acts on M19 only with R (a bare M19 is ignored)
+    line(fmt::format("M19 R{}", num(e.value)), e);
     return;
   case Kind::ToolChange:
     line(fmt::format("T{} M6", num(e.value)), e);

@@ -126,6 +126,7 @@ void BlockReader::normalize(RawBlock& b) {
   std::string& t = b.lexText;
   const std::string& src = b.text;
   bool comment = false;
+  bool loneCr = false; // a CR inside a block: the final one of CR LF is already gone
   for (std::size_t i = 0; i < t.size(); ++i) {
     const char c = t[i];
     const auto uc = static_cast<unsigned char>(c);
@@ -180,6 +181,12 @@ void BlockReader::normalize(RawBlock& b) {
                      "'!' read as a minus sign '-' (a symbol-font artefact, nct.md §0.1)");
       t[i] = '-';
     } else if (c == '\t' || c == '\r') {
+      if (c == '\r' && !loneCr) {
+        loneCr = true;
+        diags_.warning(diag::code::LoneCarriageReturn, b.rangeAt(i, 1),
+                       "carriage return without a line feed: blocks end at LF; a file with "
+                       "CR-only line ends (old Macintosh) must be converted to LF or CR LF");
+      }
       t[i] = ' ';
     } else if (uc < 0x20 || uc == 0x7F) {
       diags_.error(diag::code::SyntaxError, b.rangeAt(i, 1),

@@ -2,7 +2,8 @@
 // divergence, with both sides' source lines, as a readable report.
 //
 // Both lists are normalised the same way before the 1:1 walk:
-//  1. only the kinds in CompareOptions::kinds are kept (default Rapid, Feed, Arc, Dwell), so
+//  1. only the kinds in CompareOptions::kinds are kept (default Rapid, Feed, Arc, Dwell and the
+//     oriented spindle stop, which decides whether a boring bar may shift sideways), so
 //     events one side does not emit (spindle, coolant, messages, plane/units/feed-mode
 //     changes, ...) do not matter;
 //  2. zero-length straight moves are dropped (rs274 prints e.g. `G0 X0` at X0, G85 prints one);
@@ -39,7 +40,7 @@ struct CompareOptions {
   bool mergeCollinearFeeds = true;
   bool mergeCollinearRapids = false; // rapids are only defined by their end points anyway
   std::vector<motion::Kind> kinds = {motion::Kind::Rapid, motion::Kind::Feed, motion::Kind::Arc,
-                                     motion::Kind::Dwell};
+                                     motion::Kind::Dwell, motion::Kind::SpindleOrient};
   std::string leftName = "gcx";
   std::string rightName = "rs274";
   /// Optional: to print file names and the text of the source lines in the report.

@@ -10,9 +10,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include "emit/canonical.h"
 #include "oracle/canon.h"
 #include "oracle/compare.h"
 #include "oracle/rs274.h"
@@ -254,6 +256,45 @@ TEST(CyclesDifference, CyclesSpec_3_5_G76FineBoring) {
                       std::vector<std::string>{"R 40,30,50", "R 40,30,2", "L 40,30,-20 F60",
                                                "DW 1s", "R 40.3,29.8,-20", "R 40.3,29.8,50",
                                                "R 40,30,50"});
+}
+
+} // namespace
+} // namespace gcx::test
+
+namespace gcx::test {
+namespace {
+
+// G76 and G87 stop the spindle oriented before the bar shifts sideways. LinuxCNC ignores a bare
+// M19 (it orients only with R), so gcx writes `M19 R<angle>`: rs274 run on the canonical output
+// orients at the same points, and the comparer counts the oriented stop as spindle state.
+void expectCanonicalOrientedStops(const std::string& name, long stops) {
+  if (!oracle::rs274Available()) GTEST_SKIP() << "rs274 (linuxcnc-uspace) is not installed";
+  std::ostringstream canonical;
+  emit::CanonicalEmitter emitter(canonical);
+  const ProgramRun ours = runNct(readFile(cyclesDir() / (name + ".nct")), {}, &emitter);
+  ASSERT_TRUE(ours.errors.empty()) << ours.rendered;
+  const oracle::Rs274Result raw = oracle::Rs274().run(canonical.str());
+  ASSERT_TRUE(raw.ok()) << raw.summary();
+  oracle::CanonOptions copt;
+  copt.programText = canonical.str();
+  const std::vector<motion::Event> theirs = oracle::parseCanon(raw.canonLines, copt);
+  const auto orients = [](const std::vector<motion::Event>& events) {
+    return std::count_if(events.begin(), events.end(), [](const motion::Event& e) {
+      return e.kind == motion::Kind::SpindleOrient;
+    });
+  };
+  EXPECT_EQ(orients(ours.events), stops) << canonical.str();
+  EXPECT_EQ(orients(theirs), stops) << canonical.str();
+  const oracle::CompareResult c = oracle::compareEvents(ours.events, theirs);
+  EXPECT_TRUE(c.equivalent) << c.report << "\n--- canonical:\n" << canonical.str();
+}
+
+TEST(CyclesDifference, CyclesSpec_G76_CanonicalOrientedStopIsHonouredByRs274) {
+  expectCanonicalOrientedStops("r04_g76_fine_boring", 1); // at the bottom, before the shift
+}
+
+TEST(CyclesDifference, CyclesSpec_G87_CanonicalOrientedStopIsHonouredByRs274) {
+  expectCanonicalOrientedStops("r03_g87_back_boring", 2); // above the bore and at the bottom
 }
 
 } // namespace

@@ -1,6 +1,14 @@
 # Runs `GCX CMD FILE [ARGS]` and checks the exit code, a piece of standard error and one it
-# must not have.
-execute_process(COMMAND ${GCX} ${CMD} ${FILE} ${ARGS} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+# must not have. STDOUT_FILE (optional) receives standard output, e.g. /dev/full to test a
+# failing write.
+if(DEFINED STDOUT_FILE)
+  execute_process(COMMAND ${GCX} ${CMD} ${FILE} ${ARGS} RESULT_VARIABLE rc
+                  OUTPUT_FILE ${STDOUT_FILE} ERROR_VARIABLE err)
+  set(out "(to ${STDOUT_FILE})")
+else()
+  execute_process(COMMAND ${GCX} ${CMD} ${FILE} ${ARGS} RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                  ERROR_VARIABLE err)
+endif()
 if(NOT rc EQUAL EXPECT_EXIT)
   message(FATAL_ERROR "exit code ${rc}, expected ${EXPECT_EXIT}\nstdout: ${out}\nstderr: ${err}")
 endif()
