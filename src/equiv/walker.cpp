@@ -507,16 +507,16 @@ private:
       if (x.prev) return endedEarly(x, y, &x == &a_);
     }
     const Piece &pa = *a_.piece, &pb = *b_.piece;
+    // pieces that start together and end apart: their end points; else where the lead ended
     Vec3 d = pb.end() - pa.end();
-    if (a_.t > 0 || b_.t > 0 || maxAbs(d) <= tol())
+    const motion::Extra dx = pb.extra(1) - pa.extra(1);
+    const bool endsDiffer = maxAbs(d) > tol() || dx.cwiseAbs().maxCoeff() > tol();
+    if (a_.t > 0 || b_.t > 0 || !endsDiffer)
       d = leadIsA ? Vec3(onFollow - end) : Vec3(end - onFollow);
     (void)follow;
     (void)lead;
-    std::string why = endSummary(d, tol());
-    if (maxAbs(d) <= tol()) {
-      const double dx = (pb.extra(1) - pa.extra(1)).cwiseAbs().maxCoeff();
-      why = fmt::format("end point of the extra axes differs by {:.3f}", dx);
-    }
+    const std::string why =
+        maxAbs(d) > tol() ? endSummary(d, tol()) : endSummary(d, tol(), "end point", dx);
     diverge(DivergenceKind::Geometry, why, d.norm(), end, sideAt(pa.event()), sideAt(pb.event()));
   }
 
@@ -527,10 +527,7 @@ private:
     if (maxAbs(d) > tol() || dx > tol()) {
       int axis = 0;
       d.cwiseAbs().maxCoeff(&axis);
-      std::string why =
-          maxAbs(d) > tol()
-              ? endSummary(d, tol(), "rapid end point")
-              : fmt::format("rapid end point of the extra axes differs by {:.3f}", dx);
+      const std::string why = endSummary(d, tol(), "rapid end point", pb.extra(1) - pa.extra(1));
       return diverge(DivergenceKind::Geometry, why, d.norm(), pa.end(), sideAt(a_.setterOf(axis)),
                      sideAt(b_.setterOf(axis)));
     }

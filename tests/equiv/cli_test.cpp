@@ -93,6 +93,12 @@ TEST(EquivCli, RotaryDuringTheTravelIsNotRotaryBeforeIt) {
   const std::string c = f.write("c.nct", "G1 F100 X4 A36\nG1 X10 A90\n");
   EXPECT_EQ(gcx("equiv " + a + " " + b).exit, 1);
   EXPECT_EQ(gcx("equiv " + a + " " + c).exit, 0);
+  const std::string d = f.write("d.nct", "G0 A90\n");
+  const std::string e = f.write("e.nct", "G0 A45\n");
+  const GcxRun r = gcx("equiv " + d + " " + e);
+  EXPECT_EQ(r.exit, 1) << r.err;
+  EXPECT_NE(firstLine(r.out).find(": rapid end point A differs by 45.000 deg"), std::string::npos)
+      << r.out;
 }
 
 TEST(EquivCli, JsonObject) {

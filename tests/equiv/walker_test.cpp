@@ -370,6 +370,13 @@ TEST(EquivExtraAxes, TurningInTheFirstHalfIsNotTurningAlongTheWhole) {
   EXPECT_EQ(brief(compare(a, b)), "geometry A:1 B:1 end point X differs by 5.000 mm");
 }
 
+TEST(EquivExtraAxes, SameEndInXYZDifferentTurn) {
+  Stream a, b;
+  a.feedA(10, 0, 0, 90);
+  b.feedA(10, 0, 0, 45);
+  EXPECT_EQ(brief(compare(a, b)), "geometry A:1 B:1 end point A differs by 45.000 deg");
+}
+
 // --- the summary up to the difference ----------------------------------------------------------
 
 // Each side counts what came before the segment its report names: an identical prefix counts
