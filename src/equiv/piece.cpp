@@ -15,6 +15,7 @@ Piece::Piece(const motion::Event& e, const MotionState& state)
       extraEnd_(e.extraEnd) {
   if (e.kind == motion::Kind::Arc) arc_.emplace(e);
   length_ = motion::pathLength(e);
+  extraLength_ = (extraEnd_ - extraStart_).norm();
 }
 
 Piece Piece::rapidRun(const motion::Event& first, const motion::Event& last,
@@ -23,6 +24,7 @@ Piece Piece::rapidRun(const motion::Event& first, const motion::Event& last,
   p.start_ = first.start;
   p.extraStart_ = first.extraStart;
   p.length_ = (p.end_ - p.start_).norm();
+  p.extraLength_ = (p.extraEnd_ - p.extraStart_).norm();
   p.run_ = true;
   p.first_ = first;
   return p;
@@ -30,6 +32,10 @@ Piece Piece::rapidRun(const motion::Event& first, const motion::Event& last,
 
 double Piece::lengthFrom(double t) const {
   t = std::clamp(t, 0.0, 1.0);
+  return std::hypot(pathLengthFrom(t), (1 - t) * extraLength_);
+}
+
+double Piece::pathLengthFrom(double t) const {
   if (!arc_ || !arc_->isSpiral()) return (1 - t) * length_;
   // |dp/dt|² = (sweep·r(t))² + (r1 − r0)² + rise², r linear in t: Simpson on 32 intervals
   const motion::ArcGeometry& a = *arc_;
@@ -55,11 +61,17 @@ motion::Extra Piece::extra(double t) const {
   return extraStart_ + std::clamp(t, 0.0, 1.0) * (extraEnd_ - extraStart_);
 }
 
-double Piece::nearest(const Vec3& p, double lo, double hi, double hint, double tol) const {
-  double best = lo, bestDist = (point(lo) - p).norm();
+double Piece::nearest(const Vec3& p, double lo, double hi, double hint, double tol,
+                      const motion::Extra* px) const {
+  const bool axisSpace = px && !arc_;
+  auto distance = [&](double t) {
+    const double dxyz = (point(t) - p).norm();
+    return axisSpace ? std::hypot(dxyz, (extra(t) - *px).norm()) : dxyz;
+  };
+  double best = lo, bestDist = distance(lo);
   auto consider = [&](double t) {
     if (t < lo || t > hi) return;
-    const double dist = (point(t) - p).norm();
+    const double dist = distance(t);
     const bool bothClose = dist <= tol && bestDist <= tol;
     if (bothClose ? std::abs(t - hint) < std::abs(best - hint) : dist < bestDist) {
       best = t;
@@ -68,8 +80,13 @@ double Piece::nearest(const Vec3& p, double lo, double hi, double hint, double t
   };
   if (!arc_) {
     const Vec3 d = end_ - start_;
-    const double len2 = d.squaredNorm();
-    if (len2 > 0) consider(std::clamp((p - start_).dot(d) / len2, lo, hi));
+    double along = (p - start_).dot(d), len2 = d.squaredNorm();
+    if (axisSpace) {
+      const motion::Extra de = extraEnd_ - extraStart_;
+      along += (*px - extraStart_).dot(de);
+      len2 += de.squaredNorm();
+    }
+    if (len2 > 0) consider(std::clamp(along / len2, lo, hi));
     return best;
   }
   // The angle of p about the centre gives one candidate per turn; the normal coordinate and

@@ -43,8 +43,10 @@ public:
   bool isRapidRun() const { return run_; }
   const Vec3& start() const { return start_; }
   const Vec3& end() const { return end_; }
-  double length() const { return length_; }
-  /// Path length from t to the end (a spiral's length is not linear in t).
+  /// Length in axis space: the XYZ path (mm) and the extra axes' travel together, so a move of
+  /// the extra axes alone has a length (docs/equivalence.md, "Extra axes").
+  double length() const { return lengthFrom(0); }
+  /// Axis-space length from t to the end (a spiral's length is not linear in t).
   double lengthFrom(double t) const;
 
   Vec3 point(double t) const;
@@ -52,7 +54,9 @@ public:
   motion::Extra extra(double t) const;
   /// The parameter in [lo, hi] of the point nearest to p. Where several are within `tol` of p
   /// (a full circle's start and end, a helix's turns), the one closest to `hint`.
-  double nearest(const Vec3& p, double lo, double hi, double hint, double tol) const;
+  /// A line measures the distance in axis space when `px` (the extra axes at p) is given.
+  double nearest(const Vec3& p, double lo, double hi, double hint, double tol,
+                 const motion::Extra* px = nullptr) const;
   /// Points of the sub-piece [lo, hi] that bound its distance to another piece: the ends for a
   /// line, enough points for an arc that the largest deviation from a line or another circle is
   /// seen to well within the tolerance (always including the middle).
@@ -61,13 +65,16 @@ public:
   bool sameCarrier(const Piece& o, double tol) const;
 
 private:
+  double pathLengthFrom(double t) const; // XYZ only
+
   motion::Event event_;
   motion::Event first_; // rapid runs only
   MotionState state_;
   std::optional<motion::ArcGeometry> arc_;
   Vec3 start_, end_;
   motion::Extra extraStart_, extraEnd_;
-  double length_ = 0;
+  double length_ = 0;      // XYZ path
+  double extraLength_ = 0; // travel of the extra axes
   bool run_ = false;
 };
 

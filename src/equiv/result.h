@@ -22,7 +22,7 @@ const char* kindName(DivergenceKind k);
 struct SideAt {
   bool present = false;
   motion::Event event;
-  std::string description; // oracle::describe() of the event
+  std::string description; // motion::describeEvent() of the event
 };
 
 struct Divergence {

@@ -5,7 +5,7 @@
 #include <array>
 #include <cmath>
 
-#include "oracle/compare.h"
+#include "motion/describe.h"
 
 namespace gcx::equiv {
 
@@ -69,6 +69,7 @@ public:
   /// Leaves the current item (a finished piece becomes prev) and reads the next one.
   void advance() {
     if (type == Type::Piece) {
+      beforePrev_ = before_;
       prev = std::move(piece);
       ++summary.segments;
     } else if (type == Type::Discrete) {
@@ -78,18 +79,41 @@ public:
     t = 0;
     load();
   }
-  void finishStats() { summary.stats = stats_.stats(); }
+  /// The summary "up to the difference": what came before the item the report names (the
+  /// previous piece when `namesPrev`, else the current item), so an identical prefix counts the
+  /// same on both sides however far each has read. A side that ended counts everything.
+  void finishStats(bool diverged) {
+    summary.stats = stats_.stats();
+    if (!diverged || (type == Type::End && !namesPrev)) return;
+    const Mark& m = namesPrev ? beforePrev_ : before_;
+    summary.stats = m.stats;
+    summary.segments = m.segments;
+    summary.events = m.events;
+  }
+  bool namesPrev = false; // the divergence names prev rather than the current item
 
 private:
+  /// Statistics and counts before an item's first event.
+  struct Mark {
+    motion::Stats stats;
+    std::size_t segments = 0, events = 0;
+  };
+
+  /// The next event; counted in the statistics by count() once it is consumed, so an event
+  /// read ahead of a rapid run (pending_) counts only when its own item is read.
   bool pull(Event& e) {
     if (pending_) {
       e = std::move(*pending_);
       pending_.reset();
       return true;
     }
-    if (!src_.next(e)) return false;
-    stats_.event(e);
-    return true;
+    return src_.next(e);
+  }
+  void count(const Event& e) { stats_.event(e); }
+  /// e starts the current item.
+  void countFirst(const Event& e) {
+    before_ = Mark{stats_.stats(), summary.segments, summary.events};
+    count(e);
   }
 
   bool zeroLength(const Event& e) const {
@@ -101,6 +125,10 @@ private:
   void load() {
     Event e;
     while (pull(e)) {
+      if (isDiscrete(e.kind) || (isMove(e.kind) && !zeroLength(e)))
+        countFirst(e);
+      else
+        count(e);
       switch (e.kind) {
       case Kind::Spindle:
         state_.spindleSpeed = e.value;
@@ -152,6 +180,7 @@ private:
     Event n;
     while (pull(n)) {
       if (n.kind == Kind::Rapid) {
+        count(n);
         if (zeroLength(n)) continue;
         for (int i = 0; i < 3; ++i)
           if (std::abs(n.end[i] - n.start[i]) > o_.tolerance * 1e-3) setters_[i] = n;
@@ -159,8 +188,10 @@ private:
         continue;
       }
       if (!isMove(n.kind) && !isDiscrete(n.kind) && n.kind != Kind::Spindle &&
-          n.kind != Kind::Coolant)
+          n.kind != Kind::Coolant) {
+        count(n);
         continue;
+      }
       pending_ = std::move(n);
       break;
     }
@@ -178,10 +209,11 @@ private:
   MotionState state_;
   std::optional<Event> pending_;
   std::array<Event, 3> setters_;
+  Mark before_, beforePrev_;
 };
 
 SideAt sideAt(const Event& e) {
-  return SideAt{true, e, oracle::describe(e)};
+  return SideAt{true, e, motion::describeEvent(e)};
 }
 
 const char* axisName(int i) {
@@ -189,12 +221,19 @@ const char* axisName(int i) {
   return names[i];
 }
 
-/// "end point X differs by 0.500 mm, Z by 0.100 mm" for the axes beyond the tolerance.
-std::string endSummary(const Vec3& d, double tol, const char* what = "end point") {
+/// "end point X differs by 0.500 mm, Z by 0.100 mm" for the axes beyond the tolerance, the
+/// extra axes too when given ("A by 45.000 deg": A B C turn, U V W are linear).
+std::string endSummary(const Vec3& d, double tol, const char* what = "end point",
+                       const motion::Extra& dx = motion::Extra::Zero()) {
   std::string s;
   for (int i = 0; i < 3; ++i) {
     if (std::abs(d[i]) <= tol) continue;
     s += fmt::format("{}{} by {:.3f} mm", s.empty() ? "" : ", ", axisName(i), std::abs(d[i]));
+  }
+  for (int i = 0; i < dx.size(); ++i) {
+    if (std::abs(dx[i]) <= tol) continue;
+    s += fmt::format("{}{} by {:.3f} {}", s.empty() ? "" : ", ", motion::kExtraAxisNames[i],
+                     std::abs(dx[i]), i < 3 ? "deg" : "mm");
   }
   if (s.empty()) return fmt::format("{} differs by {:.4f} mm", what, d.norm());
   const std::size_t space = s.find(' ');
@@ -246,11 +285,13 @@ std::string stateDifference(const MotionState& a, const MotionState& b) {
 /// Empty if two discrete events agree, else what differs.
 std::string eventDifference(const Event& a, const Event& b) {
   if (a.kind != b.kind)
-    return fmt::format("events differ: {} vs {}", oracle::describe(a), oracle::describe(b));
+    return fmt::format("events differ: {} vs {}", motion::describeEvent(a),
+                       motion::describeEvent(b));
   switch (a.kind) {
   case Kind::Dwell:
     if (a.perRevolution != b.perRevolution || !close(a.value, b.value, 1e-4))
-      return fmt::format("dwell differs: {} vs {}", oracle::describe(a), oracle::describe(b));
+      return fmt::format("dwell differs: {} vs {}", motion::describeEvent(a),
+                         motion::describeEvent(b));
     return {};
   case Kind::Stop:
     if (a.optional != b.optional)
@@ -276,8 +317,8 @@ public:
     b_.advance();
     while (!done_)
       step();
-    a_.finishStats();
-    b_.finishStats();
+    a_.finishStats(r_.divergence.has_value());
+    b_.finishStats(r_.divergence.has_value());
     r_.a = a_.summary;
     r_.b = b_.summary;
     return std::move(r_);
@@ -290,7 +331,14 @@ private:
 
   void diverge(DivergenceKind kind, std::string summary, double amount, const Vec3& where, SideAt a,
                SideAt b) {
-    r_.divergence = Divergence{kind, std::move(summary), amount, where, std::move(a), std::move(b)};
+    Divergence d;
+    d.kind = kind;
+    d.summary = std::move(summary);
+    d.amount = amount;
+    d.where = where;
+    d.a = std::move(a);
+    d.b = std::move(b);
+    r_.divergence = std::move(d);
     done_ = true;
   }
 
@@ -299,14 +347,17 @@ private:
   void endedEarly(Side& x, Side& y, bool xIsA) {
     const Vec3 xEnd = x.prev ? x.prev->end() : y.piece->point(y.t);
     const Vec3 d = y.piece->end() - xEnd;
+    const motion::Extra dx = y.piece->extra(1) - (x.prev ? x.prev->extra(1) : y.piece->extra(y.t));
+    x.namesPrev = x.prev.has_value();
     SideAt xs = x.prev ? sideAt(x.prev->event())
                        : (x.type == Side::Type::Discrete ? sideAt(x.event) : SideAt{});
     SideAt ys = sideAt(y.piece->event());
-    std::string summary = endSummary(xIsA ? d : Vec3(-d), tol());
+    std::string summary =
+        endSummary(xIsA ? d : Vec3(-d), tol(), "end point", xIsA ? dx : motion::Extra(-dx));
     if (x.type == Side::Type::End)
       summary += fmt::format("; {} ended", xIsA ? "A" : "B");
     else if (x.type == Side::Type::Discrete)
-      summary += fmt::format(" ({} has {} next)", xIsA ? "A" : "B", oracle::describe(x.event));
+      summary += fmt::format(" ({} has {} next)", xIsA ? "A" : "B", motion::describeEvent(x.event));
     if (xIsA)
       diverge(DivergenceKind::Geometry, summary, d.norm(), xEnd, xs, ys);
     else
@@ -356,7 +407,7 @@ private:
     const Event& ev = aEvent ? a_.event : b_.event;
     const Side& mover = aEvent ? b_ : a_;
     const std::string why = fmt::format("{} has {} where {} moves", aEvent ? "A" : "B",
-                                        oracle::describe(ev), aEvent ? "B" : "A");
+                                        motion::describeEvent(ev), aEvent ? "B" : "A");
     diverge(DivergenceKind::Event, why, 0, mover.piece->start(),
             aEvent ? sideAt(ev) : sideAt(mover.piece->event()),
             aEvent ? sideAt(mover.piece->event()) : sideAt(ev));
@@ -392,8 +443,9 @@ private:
     const bool leadIsA = &lead == &a_;
     const Piece &lp = *lead.piece, &fp = *follow.piece;
     const Vec3 end = lp.end();
+    const motion::Extra endExtra = lp.extra(1);
     const double hint = std::min(1.0, follow.t + lead.remaining() / std::max(fp.length(), 1e-12));
-    const double tf = fp.nearest(end, follow.t, 1, hint, tol());
+    const double tf = fp.nearest(end, follow.t, 1, hint, tol(), &endExtra);
     const Vec3 onFollow = fp.point(tf);
     const double dEnd = (end - onFollow).norm();
     const double dExtra = (lp.extra(1) - fp.extra(tf)).cwiseAbs().maxCoeff();
@@ -434,11 +486,14 @@ private:
     Side& lead = a_.remaining() <= b_.remaining() ? a_ : b_;
     Side& follow = &lead == &a_ ? b_ : a_;
     const Vec3 end = lead.piece->end();
+    const motion::Extra endExtra = lead.piece->extra(1);
     const double hint =
         std::min(1.0, follow.t + lead.remaining() / std::max(follow.piece->length(), 1e-12));
-    const double tf = follow.piece->nearest(end, follow.t, 1, hint, tol());
+    const double tf = follow.piece->nearest(end, follow.t, 1, hint, tol(), &endExtra);
     const Vec3 onFollow = follow.piece->point(tf);
-    if ((end - onFollow).norm() <= tol()) return false;
+    if ((end - onFollow).norm() <= tol() &&
+        (endExtra - follow.piece->extra(tf)).cwiseAbs().maxCoeff() <= tol())
+      return false;
     geometry(lead, follow, &lead == &a_, end, onFollow);
     return true;
   }
@@ -452,16 +507,16 @@ private:
       if (x.prev) return endedEarly(x, y, &x == &a_);
     }
     const Piece &pa = *a_.piece, &pb = *b_.piece;
+    // pieces that start together and end apart: their end points; else where the lead ended
     Vec3 d = pb.end() - pa.end();
-    if (a_.t > 0 || b_.t > 0 || maxAbs(d) <= tol())
+    const motion::Extra dx = pb.extra(1) - pa.extra(1);
+    const bool endsDiffer = maxAbs(d) > tol() || dx.cwiseAbs().maxCoeff() > tol();
+    if (a_.t > 0 || b_.t > 0 || !endsDiffer)
       d = leadIsA ? Vec3(onFollow - end) : Vec3(end - onFollow);
     (void)follow;
     (void)lead;
-    std::string why = endSummary(d, tol());
-    if (maxAbs(d) <= tol()) {
-      const double dx = (pb.extra(1) - pa.extra(1)).cwiseAbs().maxCoeff();
-      why = fmt::format("end point of the extra axes differs by {:.3f}", dx);
-    }
+    const std::string why =
+        maxAbs(d) > tol() ? endSummary(d, tol()) : endSummary(d, tol(), "end point", dx);
     diverge(DivergenceKind::Geometry, why, d.norm(), end, sideAt(pa.event()), sideAt(pb.event()));
   }
 
@@ -472,10 +527,7 @@ private:
     if (maxAbs(d) > tol() || dx > tol()) {
       int axis = 0;
       d.cwiseAbs().maxCoeff(&axis);
-      std::string why =
-          maxAbs(d) > tol()
-              ? endSummary(d, tol(), "rapid end point")
-              : fmt::format("rapid end point of the extra axes differs by {:.3f}", dx);
+      const std::string why = endSummary(d, tol(), "rapid end point", pb.extra(1) - pa.extra(1));
       return diverge(DivergenceKind::Geometry, why, d.norm(), pa.end(), sideAt(a_.setterOf(axis)),
                      sideAt(b_.setterOf(axis)));
     }

@@ -1,5 +1,6 @@
 #include "oracle/compare.h"
 
+#include "motion/describe.h"
 #include "motion/geometry.h"
 
 #include <fmt/format.h>
@@ -96,22 +97,6 @@ std::vector<Item> normalise(const std::vector<Event>& in, const CompareOptions& 
   return out;
 }
 
-std::string fmtVec(const Vec3& v) {
-  auto z = [](double d) { return std::abs(d) < 5e-5 ? 0.0 : d; }; // no "-0.0000"
-  return fmt::format("({:.4f}, {:.4f}, {:.4f})", z(v.x()), z(v.y()), z(v.z()));
-}
-
-/// " A 0.0000 -> 90.0000" for each extra axis off zero at either end of a move.
-std::string fmtExtra(const Event& e) {
-  auto z = [](double d) { return std::abs(d) < 5e-5 ? 0.0 : d; };
-  std::string s;
-  for (int i = 0; i < 6; ++i)
-    if (e.extraStart[i] != 0 || e.extraEnd[i] != 0)
-      s += fmt::format(" {} {:.4f} -> {:.4f}", motion::kExtraAxisNames[i], z(e.extraStart[i]),
-                       z(e.extraEnd[i]));
-  return s;
-}
-
 std::string where(const Event& e, const SourceManager* sm) {
   std::string s;
   const SourceLoc& at = e.from.at;
@@ -139,13 +124,14 @@ std::string describeItem(const Item& it, const char* side, const SourceManager* 
     pieces = fmt::format(" [{} collinear pieces, events #{}..#{}]", it.last - it.first + 1,
                          it.first, it.last);
   return fmt::format("  {:<6} #{} {}:\n           {}{}", side, it.first, where(it.e, sm),
-                     describe(it.e), pieces);
+                     motion::describeEvent(it.e), pieces);
 }
 
 /// Empty if a and b match, else why not.
 std::string mismatch(const Event& a, const Event& b, const CompareOptions& o) {
   if (a.kind != b.kind)
-    return fmt::format("different kinds: {} vs {}", kindName(a.kind), kindName(b.kind));
+    return fmt::format("different kinds: {} vs {}", motion::kindLabel(a.kind),
+                       motion::kindLabel(b.kind));
   const double tol = o.tolerance;
   switch (a.kind) {
   case Kind::Rapid:
@@ -222,92 +208,6 @@ std::string mismatch(const Event& a, const Event& b, const CompareOptions& o) {
 }
 
 } // namespace
-
-const char* kindName(Kind k) {
-  switch (k) {
-  case Kind::Rapid:
-    return "Rapid";
-  case Kind::Feed:
-    return "Feed";
-  case Kind::Arc:
-    return "Arc";
-  case Kind::Dwell:
-    return "Dwell";
-  case Kind::Spindle:
-    return "Spindle";
-  case Kind::SpindleOrient:
-    return "SpindleOrient";
-  case Kind::OverrideLock:
-    return "OverrideLock";
-  case Kind::ToolChange:
-    return "ToolChange";
-  case Kind::Coolant:
-    return "Coolant";
-  case Kind::Stop:
-    return "Stop";
-  case Kind::End:
-    return "End";
-  case Kind::Message:
-    return "Message";
-  case Kind::PlaneChange:
-    return "PlaneChange";
-  case Kind::UnitsChange:
-    return "UnitsChange";
-  case Kind::FeedModeChange:
-    return "FeedModeChange";
-  }
-  return "?";
-}
-
-std::string describe(const Event& e) {
-  const std::string feed = fmt::format(" F{}{}", e.feed, e.perRevolution ? "/rev" : "");
-  switch (e.kind) {
-  case Kind::Rapid:
-    return fmt::format("Rapid {} -> {}{}", fmtVec(e.start), fmtVec(e.end), fmtExtra(e));
-  case Kind::Feed:
-    return fmt::format("Feed {} -> {}{}{}", fmtVec(e.start), fmtVec(e.end), fmtExtra(e), feed);
-  case Kind::Arc: {
-    std::string s = fmt::format("Arc {} {} {} -> {}{} centre {}", motion::planeCode(e.plane),
-                                e.clockwise ? "CW" : "CCW", fmtVec(e.start), fmtVec(e.end),
-                                fmtExtra(e), fmtVec(e.center));
-    if (e.turns != 0) s += fmt::format(" +{} turns", e.turns);
-    if (std::abs(e.startRadius - e.endRadius) > 5e-5) // spiral, not 4-decimal rounding
-      s += fmt::format(" r {:.4f} -> {:.4f}", e.startRadius, e.endRadius);
-    else
-      s += fmt::format(" r {:.4f}", e.startRadius);
-    return s + feed;
-  }
-  case Kind::Dwell:
-    return fmt::format("Dwell {}{}", e.value, e.perRevolution ? " rev" : " s");
-  case Kind::Spindle:
-    return fmt::format("Spindle S{} {}", e.value,
-                       e.direction > 0   ? "CW"
-                       : e.direction < 0 ? "CCW"
-                                         : "stop");
-  case Kind::SpindleOrient:
-    return fmt::format("SpindleOrient {}", e.value);
-  case Kind::OverrideLock:
-    return e.value != 0 ? "OverrideLock on" : "OverrideLock off";
-  case Kind::ToolChange:
-    return fmt::format("ToolChange T{}", e.value);
-  case Kind::Coolant:
-    return fmt::format("Coolant M{}", e.value);
-  case Kind::Stop:
-    return e.optional ? "Stop (optional)" : "Stop";
-  case Kind::End:
-    return "End";
-  case Kind::Message:
-    return fmt::format("Message \"{}\"", e.text);
-  case Kind::PlaneChange:
-    return fmt::format("PlaneChange {}{}{}", motion::planeCode(e.plane), e.text.empty() ? "" : " ",
-                       e.text);
-  case Kind::UnitsChange:
-    return fmt::format("UnitsChange G{}", e.value);
-  case Kind::FeedModeChange:
-    return fmt::format("FeedModeChange G{}", e.value);
-  }
-  return "?";
-}
 
 CompareResult compareEvents(const std::vector<Event>& left, const std::vector<Event>& right,
                             const CompareOptions& o) {

@@ -64,8 +64,4 @@ CompareResult compareEvents(const std::vector<motion::Event>& left,
                             const std::vector<motion::Event>& right,
                             const CompareOptions& options = {});
 
-/// One event as text: "Feed (0.0000, 0.0000, 0.0000) -> (10.0000, 0.0000, 0.0000) F300".
-std::string describe(const motion::Event& e);
-const char* kindName(motion::Kind k);
-
 } // namespace gcx::oracle

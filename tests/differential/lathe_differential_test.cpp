@@ -24,6 +24,7 @@
 
 #include <fmt/format.h>
 
+#include "motion/describe.h"
 #include "oracle/canon.h"
 #include "oracle/compare.h"
 #include "oracle/rs274.h"
@@ -130,7 +131,7 @@ Parts parts(const Both& b, const Lines& l) {
 std::string dump(const std::vector<Event>& ev) {
   std::string s;
   for (const Event& e : ev)
-    s += fmt::format("  line {}: {}\n", e.from.at.line, oracle::describe(e));
+    s += fmt::format("  line {}: {}\n", e.from.at.line, motion::describeEvent(e));
   return s;
 }
 

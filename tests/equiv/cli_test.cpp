@@ -75,6 +75,32 @@ TEST(EquivCli, DifferentExitsOneAndNamesBothLines) {
   EXPECT_EQ(gcx("equiv " + a + " " + b + " --tol 0.6").exit, 0);
 }
 
+TEST(EquivCli, MoveOfTheRotaryAxisAloneIsCompared) {
+  Files f;
+  const std::string a = f.write("a.nct", "G1 F100 A90\n");
+  const std::string b = f.write("b.nct", "G1 F100 A45\n");
+  const GcxRun r = gcx("equiv " + a + " " + b);
+  EXPECT_EQ(r.exit, 1) << r.err;
+  EXPECT_EQ(firstLine(r.out), "first difference at " + (f.dir / "a.nct").string() + ":1:1 vs " +
+                                  (f.dir / "b.nct").string() +
+                                  ":1:1: end point A differs by 45.000 deg; B ended");
+}
+
+TEST(EquivCli, RotaryDuringTheTravelIsNotRotaryBeforeIt) {
+  Files f;
+  const std::string a = f.write("a.nct", "G1 F100 X10 A90\n");
+  const std::string b = f.write("b.nct", "G1 F100 A90\nG1 X10\n");
+  const std::string c = f.write("c.nct", "G1 F100 X4 A36\nG1 X10 A90\n");
+  EXPECT_EQ(gcx("equiv " + a + " " + b).exit, 1);
+  EXPECT_EQ(gcx("equiv " + a + " " + c).exit, 0);
+  const std::string d = f.write("d.nct", "G0 A90\n");
+  const std::string e = f.write("e.nct", "G0 A45\n");
+  const GcxRun r = gcx("equiv " + d + " " + e);
+  EXPECT_EQ(r.exit, 1) << r.err;
+  EXPECT_NE(firstLine(r.out).find(": rapid end point A differs by 45.000 deg"), std::string::npos)
+      << r.out;
+}
+
 TEST(EquivCli, JsonObject) {
   Files f;
   const std::string a = f.write("a.nct", "G90 G17 G21\nS1000 M3\nG1 X10 F100\nM30\n");
@@ -89,7 +115,7 @@ TEST(EquivCli, JsonObject) {
   EXPECT_EQ(j["divergence"]["b"]["source"], "G1 X10 F100");
   EXPECT_EQ(j["divergence"]["state_set_b"]["line"], 2);
   EXPECT_EQ(j["a"]["segments"], 0);
-  EXPECT_EQ(j["a"]["stats"]["length_mm"]["feed"], 10.0);
+  EXPECT_EQ(j["a"]["stats"]["length_mm"]["feed"], 0.0); // before the divergent segment
   EXPECT_EQ(j["tolerance_mm"], 0.001);
 }
 

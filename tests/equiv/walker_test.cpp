@@ -37,10 +37,18 @@ struct Stream {
     Event e = base(Kind::Feed);
     e.start = pos;
     e.end = pos = Vec3(x, y, z);
+    e.extraStart = e.extraEnd = extra;
     e.feed = f;
     ev.push_back(e);
     return *this;
   }
+  /// A feed line that also turns the A axis to a (degrees).
+  Stream& feedA(double x, double y, double z, double a) {
+    feed(x, y, z);
+    ev.back().extraEnd[0] = extra[0] = a;
+    return *this;
+  }
+  motion::Extra extra = motion::Extra::Zero();
   /// An XY arc about (cx, cy) at the current height.
   Stream& arc(double x, double y, double cx, double cy, bool cw, double f = 100, int turns = 0) {
     Event e = base(Kind::Arc);
@@ -330,6 +338,61 @@ TEST(EquivEvents, ToolChangeAndStop) {
   c.tool(1).feed(10, 0, 0).stop(true);
   EXPECT_EQ(brief(compare(a, b)), "event A:1 B:1 tool change differs: T1 vs T2");
   EXPECT_EQ(brief(compare(a, c)), "event A:3 B:3 stop differs: M0 vs M1");
+}
+
+// --- extra axes (docs/equivalence.md, "Extra axes") ----------------------------------------------
+
+TEST(EquivExtraAxes, MoveOfTheExtraAxesAloneIsCompared) {
+  Stream a, b;
+  a.feedA(0, 0, 0, 90);
+  b.feedA(0, 0, 0, 45);
+  EXPECT_EQ(brief(compare(a, b)), "geometry A:1 B:1 end point A differs by 45.000 deg; B ended");
+}
+
+TEST(EquivExtraAxes, RotaryMoveSplitIntoCollinearPiecesInAxisSpace) {
+  Stream a, b;
+  a.feedA(10, 0, 0, 90);
+  b.feedA(4, 0, 0, 36).feedA(10, 0, 0, 90);
+  EXPECT_EQ(brief(compare(a, b)), "equivalent");
+}
+
+TEST(EquivExtraAxes, TurningBeforeTheTravelIsNotTurningDuringIt) {
+  Stream a, b;
+  a.feedA(10, 0, 0, 90);
+  b.feedA(0, 0, 0, 90).feed(10, 0, 0);
+  EXPECT_EQ(brief(compare(a, b)), "geometry A:1 B:1 end point X differs by 10.000 mm");
+}
+
+TEST(EquivExtraAxes, TurningInTheFirstHalfIsNotTurningAlongTheWhole) {
+  Stream a, b;
+  a.feedA(10, 0, 0, 90);
+  b.feedA(5, 0, 0, 90).feed(10, 0, 0);
+  EXPECT_EQ(brief(compare(a, b)), "geometry A:1 B:1 end point X differs by 5.000 mm");
+}
+
+TEST(EquivExtraAxes, SameEndInXYZDifferentTurn) {
+  Stream a, b;
+  a.feedA(10, 0, 0, 90);
+  b.feedA(10, 0, 0, 45);
+  EXPECT_EQ(brief(compare(a, b)), "geometry A:1 B:1 end point A differs by 45.000 deg");
+}
+
+// --- the summary up to the difference ----------------------------------------------------------
+
+// Each side counts what came before the segment its report names: an identical prefix counts
+// the same, although the side whose segment ended first has read on (here into a rapid run).
+TEST(EquivSummary, IdenticalPrefixCountsTheSameOnBothSides) {
+  Stream a, b;
+  a.feed(10, 0, 0).feed(20, 0, 0).rapid(20, 10, 0).feed(0, 10, 0);
+  b.feed(10, 0, 0).feed(21, 0, 0).rapid(21, 10, 0).feed(0, 10, 0);
+  const EquivResult r = compare(a, b);
+  EXPECT_EQ(brief(r), "geometry A:2 B:2 end point X differs by 1.000 mm");
+  EXPECT_EQ(r.a.segments, 1u);
+  EXPECT_EQ(r.b.segments, 1u);
+  EXPECT_EQ(r.a.stats.feedLength, 10.0);
+  EXPECT_EQ(r.b.stats.feedLength, 10.0);
+  EXPECT_EQ(r.a.stats.rapidLength, 0.0);
+  EXPECT_EQ(r.b.stats.rapidLength, 0.0);
 }
 
 } // namespace

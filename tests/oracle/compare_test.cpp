@@ -1,6 +1,7 @@
 // Comparing event lists: kinds in order, tolerance, collinear splits, arcs, reports.
 #include <gtest/gtest.h>
 
+#include "motion/describe.h"
 #include "oracle/compare.h"
 
 namespace gcx::oracle {
@@ -272,7 +273,7 @@ TEST(Compare, ModalChangesOnlyWhenAsked) {
   r = compareEvents(a, b, modal);
   EXPECT_NE(r.report.find("codes differ"), std::string::npos) << r.report;
   EXPECT_NE(r.report.find("UnitsChange G21"), std::string::npos) << r.report;
-  EXPECT_EQ(describe(other(Kind::FeedModeChange, 94, 1)), "FeedModeChange G94");
+  EXPECT_EQ(motion::describeEvent(other(Kind::FeedModeChange, 94, 1)), "FeedModeChange G94");
 }
 
 } // namespace

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <numbers>
 
+#include "motion/describe.h"
 #include "oracle/canon.h"
 #include "oracle/compare.h"
 #include "oracle/rs274.h"
@@ -103,8 +104,8 @@ TEST_P(DifferentialProgram, RunsUnchangedOnRs274) {
   const std::size_t lines = countLines(l.text);
   for (const Event& e : ev) {
     if (e.kind == Kind::Rapid || e.kind == Kind::Feed || e.kind == Kind::Arc) ++motion;
-    EXPECT_GE(e.from.at.line, 2u) << describe(e); // line 1 is the comment
-    EXPECT_LE(e.from.at.line, lines) << describe(e);
+    EXPECT_GE(e.from.at.line, 2u) << motion::describeEvent(e); // line 1 is the comment
+    EXPECT_LE(e.from.at.line, lines) << motion::describeEvent(e);
   }
   EXPECT_GE(motion, 3u);
   ASSERT_FALSE(ev.empty());
@@ -150,7 +151,7 @@ TEST(DifferentialCorpus, G68ReferencesRotateAboutTheCentre) {
       }
     ASSERT_NE(first, nullptr) << c.name;
     EXPECT_LT((first->end - c.want).cwiseAbs().maxCoeff(), 1e-4)
-        << c.name << ": " << describe(*first);
+        << c.name << ": " << motion::describeEvent(*first);
   }
 }
 

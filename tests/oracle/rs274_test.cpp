@@ -8,6 +8,7 @@
 #include <numbers>
 #include <thread>
 
+#include "motion/describe.h"
 #include "oracle/canon.h"
 #include "oracle/compare.h"
 #include "oracle/rs274.h"
@@ -46,7 +47,7 @@ void expectEvents(const std::vector<Event>& ev, const std::vector<Want>& want, d
   ASSERT_EQ(ev.size(), want.size());
   Vec3 pos = Vec3::Zero();
   for (std::size_t i = 0; i < ev.size(); ++i) {
-    const std::string at = "event " + std::to_string(i) + " (" + describe(ev[i]) + ")";
+    const std::string at = "event " + std::to_string(i) + " (" + motion::describeEvent(ev[i]) + ")";
     EXPECT_EQ(ev[i].kind, want[i].kind) << at;
     EXPECT_EQ(ev[i].from.at.line, want[i].line) << at;
     switch (want[i].kind) {
