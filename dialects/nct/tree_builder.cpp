@@ -517,6 +517,47 @@ bool checkBrackets(const front::RawBlock& raw, diag::Engine& diags) {
   return true;
 }
 
+// The grammar recurses once per bracket, sign, function and NOT of an expression; a block
+// nested deeper than kMaxExpressionDepth is refused before the parser sees it, so no input can
+// exhaust the stack (of the parser, the IR builder or the evaluator, all bounded by the same
+// depth). A run of prefix operators counts one level each; a bracket adds the run before it.
+constexpr int kMaxExpressionDepth = 64;
+
+bool checkNestingDepth(const front::RawBlock& raw, const std::vector<Token*>& tokens,
+                       diag::Engine& diags) {
+  std::vector<int> outer; // the depth outside each open bracket
+  int depth = 0, prefixRun = 0;
+  for (Token* t : tokens) {
+    if (t->getChannel() != Token::DEFAULT_CHANNEL) continue;
+    const auto type = t->getType();
+    const bool prefix = type == P::PLUS || type == P::MINUS || type == P::NOT || type == P::HASH ||
+                        type == P::SIN || type == P::COS || type == P::TAN || type == P::ASIN ||
+                        type == P::ACOS || type == P::ATAN || type == P::SQRT || type == P::EXP ||
+                        type == P::LN || type == P::ABS || type == P::FIX || type == P::FUP;
+    if (type == P::LBRACK) {
+      outer.push_back(depth);
+      depth += prefixRun + 1;
+      prefixRun = 0;
+    } else if (type == P::RBRACK) {
+      depth = outer.empty() ? 0 : outer.back();
+      if (!outer.empty()) outer.pop_back();
+      prefixRun = 0;
+    } else if (prefix) {
+      ++prefixRun;
+    } else {
+      prefixRun = 0;
+    }
+    if (depth + prefixRun > kMaxExpressionDepth) {
+      diags.error(diag::code::ExpressionTooDeep, raw.rangeAt(t->getStartIndex(), 1),
+                  fmt::format("expression nested deeper than {} levels (brackets, signs, "
+                              "functions)",
+                              kMaxExpressionDepth));
+      return false;
+    }
+  }
+  return true;
+}
+
 } // namespace
 
 struct GrammarParser::Impl {
@@ -646,6 +687,8 @@ bool GrammarParser::parse(const front::RawBlock& raw, ir::Block& out, diag::Engi
   m.parser.getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(
       antlr4::atn::PredictionMode::SLL);
   m.parser.setErrorHandler(std::make_shared<antlr4::BailErrorStrategy>());
+  m.tokens.fill(); // the lexer does not recurse; the depth is checked before the parser does
+  if (!m.first.set && !checkNestingDepth(raw, m.tokens.getTokens(), diags)) return false;
   P::BlockContext* tree = nullptr;
   try {
     tree = m.parser.block();

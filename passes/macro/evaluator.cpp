@@ -128,6 +128,16 @@ std::optional<double> Evaluator::number(const ir::Expr& e) {
 }
 
 std::optional<Value> Evaluator::value(const ir::Expr& e) {
+  auto v = compute(e);
+  if (v && !v->vacant && !std::isfinite(v->number)) {
+    error(diag::code::ValueOutOfRange, e,
+          "the result is not a finite number (beyond the range of a double)");
+    return std::nullopt;
+  }
+  return v;
+}
+
+std::optional<Value> Evaluator::compute(const ir::Expr& e) {
   switch (e.kind) {
   case ExprKind::Number:
     return Value::of(e.number);

@@ -26,6 +26,8 @@ public:
 
   /// The value of e; vacant only for a bare variable reference, possibly in brackets (§2.5
   /// rule 1). nullopt after an error was reported at the offending expression.
+  /// The value of e; a result that is not a finite number (EXP[1000], 1E300*1E300) is an error
+  /// at the expression that produced it, so no infinity or NaN reaches a variable or a word.
   std::optional<Value> value(const ir::Expr& e);
   /// The value of e with vacant read as 0 (AX[e], bracketed address values). Where vacancy
   /// matters (GOTO#1 is 2125, §2.5 rule 5) use value().
@@ -41,6 +43,7 @@ public:
   void setVacantOrder(VacantOrder o) { vacantOrder_ = o; }
 
 private:
+  std::optional<Value> compute(const ir::Expr& e);
   std::optional<Value> unary(const ir::Expr& e);
   std::optional<Value> binary(const ir::Expr& e);
   std::optional<Value> call(const ir::Expr& e);

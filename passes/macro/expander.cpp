@@ -116,9 +116,10 @@ bool Expander::step() {
   if (f.pc >= f.program->blocks.size()) return endOfProgram(f);
   const ir::Block& b = f.program->blocks[f.pc];
   if (++blocks_ > limits_.maxBlocks)
-    return fail(
-        diag::code::TooManyBlocks, b.range,
-        fmt::format("more than {} blocks executed: is this an endless loop?", limits_.maxBlocks));
+    return fail(diag::code::TooManyBlocks, b.range,
+                fmt::format("more than {} blocks executed: is this an endless loop? (exceeded "
+                            "--max-blocks {}; raise it with --max-blocks N)",
+                            limits_.maxBlocks, limits_.maxBlocks));
   if (b.skipLevel && machine_.setup().blockSkip.count(b.skipLevel)) {
     ++f.pc;
     return true;
@@ -198,8 +199,10 @@ bool Expander::statement(Frame& f, const ir::Block& b) {
 bool Expander::loopBack(Frame& f, std::size_t head, const SourceRange& where) {
   if (++jumps_ > limits_.maxJumps)
     return fail(diag::code::RunawayLoop, where,
-                fmt::format("loop DO{} repeated more than {} times (--max-jumps)",
-                            f.program->blocks[head].stmt->loopId, limits_.maxJumps));
+                fmt::format("loop DO{} repeated more than {} times (exceeded --max-jumps {}; "
+                            "raise it with --max-jumps N)",
+                            f.program->blocks[head].stmt->loopId, limits_.maxJumps,
+                            limits_.maxJumps));
   // END returns to the test of its paired WHILE even when the loop was entered by GOTO (W7)
   auto it =
       std::find_if(f.loops.begin(), f.loops.end(), [&](const Loop& l) { return l.head == head; });
@@ -234,8 +237,9 @@ bool Expander::jumpTo(Frame& f, const ir::Expr& label, const SourceRange& where)
                 fmt::format("block N{} not found", emit::formatNumber(n)));
   if (target <= f.pc && ++jumps_ > limits_.maxJumps)
     return fail(diag::code::RunawayLoop, where,
-                fmt::format("more than {} backward jumps: runaway loop (GOTO N{})",
-                            limits_.maxJumps, emit::formatNumber(n)));
+                fmt::format("more than {} backward jumps: runaway loop (GOTO N{}; exceeded "
+                            "--max-jumps {}; raise it with --max-jumps N)",
+                            limits_.maxJumps, emit::formatNumber(n), limits_.maxJumps));
   f.pc = target;
   // loops the jump left are over
   std::erase_if(f.loops, [&](const Loop& l) {
@@ -287,6 +291,11 @@ bool Expander::write(int number, const Value& v, const ir::Stmt& s) {
 }
 
 bool Expander::message(const ir::Stmt& s, int variable, const Value& v) {
+  // the message number has at most three digits (nct-macro.md §2.9.2: alarm 4000 + nnn)
+  if (!v.vacant && !(roundHalfAway(v.number) >= 0 && roundHalfAway(v.number) <= 999))
+    return fail(diag::code::DataOutOfRange, s.target.range,
+                fmt::format("#{} = {} is out of range: a message number is 0-999", variable,
+                            emit::formatNumber(v.number)));
   const int n = v.vacant ? 0 : static_cast<int>(roundHalfAway(v.number));
   const motion::Provenance from = provenance(ir::Block{});
   if (variable == 3000) { // alarm: execution stops (§2.9.2)
@@ -414,7 +423,9 @@ bool Expander::flatten(const ir::Block& b, ir::Block& flat) {
 bool Expander::ncBlock(Frame& f, const ir::Block& b) {
   ir::Block flat;
   if (!flatten(b, flat)) return false;
-  if (!insideConfiguredCall()) { // inside one, configured codes are ordinary (§5.8 P3, P4)
+  // inside a configured call, configured codes are ordinary (§5.8 P3, P4); without
+  // parameters no code is configured
+  if (machine_.hasParameters() && !insideConfiguredCall()) {
     const std::size_t before = diags_.errorCount();
     if (auto c = configuredCall(flat)) return runConfiguredCall(f, b, flat, *c);
     if (diags_.errorCount() != before) return false;
@@ -780,7 +791,9 @@ bool Expander::returnFromCall(Frame& f, const ir::Block& flat) {
     if (++jumps_ > limits_.maxJumps)
       return fail(
           diag::code::RunawayLoop, flat.range,
-          fmt::format("M99 in the main program looped more than {} times", limits_.maxJumps));
+          fmt::format("M99 in the main program looped more than {} times (exceeded --max-jumps "
+                      "{}; raise it with --max-jumps N)",
+                      limits_.maxJumps, limits_.maxJumps));
     if (!p) {
       f.pc = 0;
       return true;
@@ -794,6 +807,12 @@ bool Expander::returnFromCall(Frame& f, const ir::Block& flat) {
   }
   if (l) f.remaining = static_cast<std::int64_t>(l->number); // §5.2 R5
   if (f.remaining > 0) {
+    // each repetition jumps back to the start of the called program
+    if (++jumps_ > limits_.maxJumps)
+      return fail(diag::code::RunawayLoop, flat.range,
+                  fmt::format("{} repeated more than {} times by its L count (exceeded "
+                              "--max-jumps {}; raise it with --max-jumps N)",
+                              f.what, limits_.maxJumps, limits_.maxJumps));
     --f.remaining;
     f.pc = 0;
     f.loops.clear();
@@ -878,7 +897,8 @@ bool mayNeedExpansion(const std::string& path) {
     std::string text = carry + chunk.substr(0, static_cast<std::size_t>(in.gcount()));
     for (char& c : text)
       c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    if (text.find('#') != std::string::npos) return true;
+    // '[': an expression, which only the expansion pass evaluates
+    if (text.find_first_of("#[") != std::string::npos) return true;
     for (const char* m : markers)
       if (text.find(m) != std::string::npos) return true;
     carry = text.size() > 8 ? text.substr(text.size() - 8) : text;

@@ -19,9 +19,9 @@ namespace gcx::macro {
 
 /// Configurable limits: a runaway loop or recursion stops with a located error naming it.
 struct Limits {
-  std::uint64_t maxJumps = 10'000'000;   // backward jumps (END, GOTO, M99 loops) per run
-  std::uint64_t maxBlocks = 200'000'000; // blocks executed per run
-  int maxDepth = 16;                     // nested M98/G65 levels (nct-macro.md V5)
+  std::uint64_t maxJumps = 2'000'000;   // backward jumps (END, GOTO, M99, L repeats) per run
+  std::uint64_t maxBlocks = 20'000'000; // blocks executed per run
+  int maxDepth = 16;                    // nested M98/G65 levels (nct-macro.md V5)
 };
 
 class Expander : public VariableAccess {

@@ -15,12 +15,16 @@ struct CommonOptions {
   bool json = false;   // diagnostics as JSON
   std::size_t maxErrors = 50;
   // execution (expand, run, plot)
-  std::vector<std::string> libraryDirs;  // --lib: where M98 P / G65 P look after the folder
-  std::uint64_t maxJumps = 10'000'000;   // --max-jumps: backward jumps before "runaway loop"
-  std::uint64_t maxBlocks = 200'000'000; // --max-blocks
-  int maxDepth = 16;                     // --max-depth: nested calls (the manual's 16)
-  std::string printFile;                 // --print: DPRNT output (default: standard output)
-  bool fanucVacantOrder = false;         // --vacant-order fanuc (nct-macro.md §12 Q1)
+  std::vector<std::string> libraryDirs; // --lib: where M98 P / G65 P look after the folder
+  // Runaway limits (docs/limits.md): each stops a runaway within seconds on a small machine
+  // while the bench programs (1,000,000 blocks, 100,000 G83 holes) run with them.
+  std::uint64_t maxJumps = 2'000'000;     // --max-jumps: backward jumps and L repeats of calls
+  std::uint64_t maxBlocks = 20'000'000;   // --max-blocks: blocks the expansion pass executes
+  std::uint64_t maxMoves = 10'000'000;    // --max-moves: rapids, feeds, arc turns
+  std::uint64_t maxOutput = 256ULL << 20; // --max-output: bytes of all outputs together
+  int maxDepth = 16;                      // --max-depth: nested calls (the manual's 16)
+  std::string printFile;                  // --print: DPRNT output (default: standard output)
+  bool fanucVacantOrder = false;          // --vacant-order fanuc (nct-macro.md §12 Q1)
 };
 
 struct ExpandOptions {

@@ -1,5 +1,8 @@
 #include "cli/execute.h"
 
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <fmt/format.h>
 #include <iostream>
@@ -13,13 +16,56 @@ namespace gcx::cli {
 
 namespace fs = std::filesystem;
 
-std::ostream& printStream(const CommonOptions& opt, bool outputOnStdout) {
-  static std::ofstream file;
-  if (!opt.printFile.empty()) {
-    if (!file.is_open()) file.open(opt.printFile, std::ios::binary | std::ios::trunc);
-    return file;
+PrintOutput::PrintOutput(const CommonOptions& opt, bool outputOnStdout)
+    : path_(opt.printFile), console_(outputOnStdout ? &std::cerr : &std::cout) {}
+
+bool PrintOutput::ok() {
+  if (path_.empty() || file_.isOpen()) return true;
+  if (file_.open(path_)) return true;
+  reportUsage(fmt::format("{}: cannot write: {}", path_, file_.error()));
+  return false;
+}
+
+bool PrintOutput::finish() {
+  if (path_.empty()) return true;
+  fileStream_.flush();
+  if (file_.close()) return true;
+  reportUsage(fmt::format("{}: cannot write: {}", path_, file_.error()));
+  return false;
+}
+
+bool copyToStdout(const std::string& path) {
+  std::cout.flush();
+  std::fflush(stdout);
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) {
+    reportUsage(fmt::format("{}: cannot read back: {}", path, std::strerror(errno)));
+    return false;
   }
-  return outputOnStdout ? std::cerr : std::cout;
+  std::vector<char> buf(1 << 16);
+  std::string error;
+  for (;;) {
+    const ssize_t n = ::read(fd, buf.data(), buf.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      if (n < 0) error = std::strerror(errno);
+      break;
+    }
+    for (ssize_t done = 0; done < n && error.empty();) {
+      const ssize_t w =
+          ::write(STDOUT_FILENO, buf.data() + done, static_cast<std::size_t>(n - done));
+      if (w < 0 && errno == EINTR) continue;
+      if (w <= 0)
+        error = std::strerror(w < 0 ? errno : EIO);
+      else
+        done += w;
+    }
+    if (!error.empty()) break;
+  }
+  ::close(fd);
+  if (error.empty()) return true;
+  reportUsage(fmt::format("standard output: cannot write: {}", error));
+  return false;
 }
 
 int openWithSetup(Session& s, const std::string& file, const std::string& setupPath,
@@ -35,6 +81,24 @@ int openWithSetup(Session& s, const std::string& file, const std::string& setupP
   return Ok;
 }
 
+macro::Limits expansionLimits(const CommonOptions& opt) {
+  macro::Limits limits;
+  limits.maxJumps = opt.maxJumps;
+  limits.maxBlocks = opt.maxBlocks;
+  limits.maxDepth = opt.maxDepth;
+  return limits;
+}
+
+void limitMachine(machine::Interpreter& interp, const CommonOptions& opt) {
+  interp.setMaxMoves(opt.maxMoves);
+  setOutputBudget(opt.maxOutput);
+  interp.setStopCheck([]() -> std::optional<std::string> {
+    if (!outputBudgetExceeded()) return std::nullopt;
+    return fmt::format("the output exceeded --max-output {} bytes; raise it with --max-output N",
+                       outputBudget());
+  });
+}
+
 namespace {
 // Programs with macro statements, variables or calls run through the expansion pass, which
 // loads them whole; everything else streams block by block.
@@ -44,12 +108,9 @@ bool expandProgram(Session& s, const CommonOptions& opt, const machine::Setup& s
   const macro::LoadedProgram* main = library.load(s.path());
   if (!main) return false;
   machine::Interpreter interp(s.dialect().profile(), setup, sink, s.diags());
+  limitMachine(interp, opt);
   macro::SystemVariables system(interp, s.diags());
-  macro::Limits limits;
-  limits.maxJumps = opt.maxJumps;
-  limits.maxBlocks = opt.maxBlocks;
-  limits.maxDepth = opt.maxDepth;
-  macro::Expander expander(library, interp, system, s.diags(), limits);
+  macro::Expander expander(library, interp, system, s.diags(), expansionLimits(opt));
   expander.setPrintOutput(&printOut);
   if (opt.fanucVacantOrder) expander.setVacantOrder(macro::VacantOrder::Fanuc);
   if (!expander.run(*main)) return false;
@@ -63,6 +124,7 @@ bool executeProgram(Session& s, const CommonOptions& opt, const machine::Setup& 
   if (macro::mayNeedExpansion(s.path())) return expandProgram(s, opt, setup, sink, printOut);
   check::StaticChecker checker(s.dialect().profile(), s.diags());
   machine::Interpreter interp(s.dialect().profile(), setup, sink, s.diags());
+  limitMachine(interp, opt);
   ir::Block block;
   bool ok = true;
   while (ok && s.source().next(block)) {
@@ -85,40 +147,55 @@ bool executeProgram(Session& s, const CommonOptions& opt, const machine::Setup& 
 }
 
 AtomicOutput::AtomicOutput(std::string path) : path_(std::move(path)) {
-  tmp_ = path_.empty()
+  std::error_code ec;
+  // a device or pipe (/dev/null, /dev/full) is written directly: it cannot be replaced
+  direct_ = !path_.empty() && fs::exists(path_, ec) && !fs::is_regular_file(path_, ec) &&
+            !fs::is_directory(path_, ec);
+  tmp_ = direct_ ? path_
+         : path_.empty()
              ? (fs::temp_directory_path() / fmt::format("gcx-{}.tmp", ::getpid())).string()
              : path_ + ".gcx-tmp";
-  out_.open(tmp_, std::ios::binary | std::ios::trunc);
+  file_.open(tmp_);
+}
+
+bool AtomicOutput::ok() {
+  if (file_.isOpen()) return true;
+  reportUsage(fmt::format("{}: cannot write: {}", path_.empty() ? tmp_ : path_, file_.error()));
+  return false;
+}
+
+void AtomicOutput::discard() {
+  std::error_code ec;
+  if (!direct_) fs::remove(tmp_, ec);
 }
 
 AtomicOutput::~AtomicOutput() {
   if (!done_) {
-    out_.close();
-    std::error_code ec;
-    fs::remove(tmp_, ec);
+    file_.close();
+    discard();
   }
 }
 
 bool AtomicOutput::commit() {
-  out_.close();
   done_ = true;
-  std::error_code ec;
-  if (!out_) {
-    reportUsage(fmt::format("{}: cannot write", tmp_));
-    fs::remove(tmp_, ec);
+  out_.flush();
+  if (!file_.close()) {
+    reportUsage(fmt::format("{}: cannot write: {}", path_.empty() ? "standard output" : path_,
+                            file_.error()));
+    discard();
     return false;
   }
+  if (direct_) return true;
   if (path_.empty()) {
-    std::ifstream back(tmp_, std::ios::binary);
-    std::cout << back.rdbuf();
-    std::cout.flush();
-    fs::remove(tmp_, ec);
-    return true;
+    const bool copied = copyToStdout(tmp_);
+    discard();
+    return copied;
   }
+  std::error_code ec;
   fs::rename(tmp_, path_, ec);
   if (ec) {
     reportUsage(fmt::format("{}: cannot write: {}", path_, ec.message()));
-    fs::remove(tmp_, ec);
+    discard();
     return false;
   }
   return true;

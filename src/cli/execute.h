@@ -2,9 +2,17 @@
 #pragma once
 #include <optional>
 
+#include "cli/output_file.h"
 #include "cli/session.h"
 #include "machine/setup.h"
 #include "motion/event.h"
+
+namespace gcx::machine {
+class Interpreter;
+}
+namespace gcx::macro {
+struct Limits;
+}
 
 namespace gcx::cli {
 
@@ -20,26 +28,53 @@ int openWithSetup(Session& s, const std::string& file, const std::string& setupP
 bool executeProgram(Session& s, const CommonOptions& opt, const machine::Setup& setup,
                     motion::Sink& sink, std::ostream& printOut);
 
+/// The run limits of the options: --max-jumps, --max-blocks, --max-depth for the expansion pass;
+/// --max-moves and --max-output for the machine, which stops at the block that crosses them.
+macro::Limits expansionLimits(const CommonOptions& opt);
+void limitMachine(machine::Interpreter& interp, const CommonOptions& opt);
+
 /// Writes through a temporary file that replaces `path` only on success (never a partial file);
-/// an empty path means standard output.
+/// an empty path means standard output. Every write, the flush and the close are checked.
 class AtomicOutput {
 public:
   explicit AtomicOutput(std::string path);
   ~AtomicOutput();
   std::ostream& stream() { return out_; }
-  bool ok() const { return static_cast<bool>(out_); }
+  /// False (with a message) if the temporary file cannot be created.
+  bool ok();
   /// Moves the result into place; false (with a message) on failure.
   bool commit();
 
 private:
+  void discard();
+
   std::string path_, tmp_;
-  std::ofstream out_;
+  CheckedFile file_;
+  std::ostream out_{&file_};
+  bool direct_ = false; // a device or pipe: no temporary file
   bool done_ = false;
 };
 
 /// Where DPRNT output goes: --print FILE, else standard output, or standard error when the
 /// command's own output is on standard output.
-std::ostream& printStream(const CommonOptions& opt, bool outputOnStdout);
+class PrintOutput {
+public:
+  PrintOutput(const CommonOptions& opt, bool outputOnStdout);
+  /// False (with a message) if --print names a file that cannot be written.
+  bool ok();
+  std::ostream& stream() { return file_.isOpen() ? fileStream_ : *console_; }
+  /// Flushes and closes --print; false (with a message) if a write failed.
+  bool finish();
+
+private:
+  std::string path_;
+  CheckedFile file_;
+  std::ostream fileStream_{&file_};
+  std::ostream* console_;
+};
+
+/// Writes a whole file to standard output; false (with a message) if the write fails.
+bool copyToStdout(const std::string& path);
 
 /// A sink that hands every event to several sinks.
 class Tee : public motion::Sink {

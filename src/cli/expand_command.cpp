@@ -24,10 +24,8 @@ int expandToNct(Session& s, const ExpandOptions& opt, const machine::Setup& setu
     return UsageError;
   }
   AtomicOutput out(opt.output);
-  if (!out.ok()) {
-    reportUsage("cannot write " + opt.output);
-    return UsageError;
-  }
+  PrintOutput print(opt.common, opt.output.empty());
+  if (!out.ok() || !print.ok()) return UsageError;
   macro::ProgramLibrary library(s.dialect(), s.sources(), s.diags(), opt.common.libraryDirs);
   const macro::LoadedProgram* main = library.load(s.path());
   if (!main) {
@@ -37,13 +35,10 @@ int expandToNct(Session& s, const ExpandOptions& opt, const machine::Setup& setu
   DiscardMotion discard;
   machine::Interpreter interp(s.dialect().profile(), setup, discard, s.diags());
   interp.setDeferCycles(true);
+  limitMachine(interp, opt.common);
   macro::SystemVariables system(interp, s.diags());
-  macro::Limits limits;
-  limits.maxJumps = opt.common.maxJumps;
-  limits.maxBlocks = opt.common.maxBlocks;
-  limits.maxDepth = opt.common.maxDepth;
-  macro::Expander expander(library, interp, system, s.diags(), limits);
-  expander.setPrintOutput(&printStream(opt.common, opt.output.empty()));
+  macro::Expander expander(library, interp, system, s.diags(), expansionLimits(opt.common));
+  expander.setPrintOutput(&print.stream());
   if (opt.common.fanucVacantOrder) expander.setVacantOrder(macro::VacantOrder::Fanuc);
   cycles::KeptContours contours(main->blocks, s.dialect().profile());
   expander.onFlatBlock([&](const ir::Block& b) {
@@ -57,7 +52,7 @@ int expandToNct(Session& s, const ExpandOptions& opt, const machine::Setup& setu
   const bool ok = expander.run(*main) && contours.check(s.diags());
   s.flushDiagnostics();
   if (!ok) return ProgramErrors;
-  return out.commit() ? Ok : UsageError;
+  return print.finish() && out.commit() ? Ok : UsageError;
 }
 
 } // namespace
@@ -78,19 +73,16 @@ int runExpand(const std::string& file, const ExpandOptions& opt) {
   if (int rc = openWithSetup(s, file, opt.setup, setup)) return rc;
   if (opt.to == "nct") return expandToNct(s, opt, setup);
   AtomicOutput out(opt.output);
-  if (!out.ok()) {
-    reportUsage("cannot write " + opt.output);
-    return UsageError;
-  }
+  PrintOutput print(opt.common, opt.output.empty());
+  if (!out.ok() || !print.ok()) return UsageError;
   emit::CanonicalOptions copt;
   copt.provenance = opt.provenance;
   copt.fileName = [&](FileId id) { return s.sources().name(id); };
   emit::CanonicalEmitter emitter(out.stream(), copt);
-  const bool ok =
-      executeProgram(s, opt.common, setup, emitter, printStream(opt.common, opt.output.empty()));
+  const bool ok = executeProgram(s, opt.common, setup, emitter, print.stream());
   s.flushDiagnostics();
   if (!ok) return ProgramErrors;
-  return out.commit() ? Ok : UsageError;
+  return print.finish() && out.commit() ? Ok : UsageError;
 }
 
 } // namespace gcx::cli

@@ -1,5 +1,8 @@
 // gcx: transpiler and toolchain between CNC G-code dialects.
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
 
 #include "cli/commands.h"
@@ -11,18 +14,37 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "gcx 0.1.0");
 
   CommonOptions common;
+  // a whole number of 1 or more: no sign, no fraction (CLI11 would wrap -1 around)
+  const CLI::Validator atLeastOne(
+      [](std::string& v) -> std::string {
+        const bool digits = !v.empty() && v.find_first_not_of("0123456789") == std::string::npos;
+        if (!digits || v.find_first_not_of('0') == std::string::npos)
+          return "must be a whole number of 1 or more, not '" + v + "'";
+        return "";
+      },
+      "N>=1");
   auto addCommon = [&](CLI::App* cmd) {
     cmd->add_option("--dialect", common.dialect,
                     "dialect of the input (default: from the extension)")
         ->check(CLI::IsMember({"nct"}));
     cmd->add_flag("--json", common.json, "diagnostics as JSON");
-    cmd->add_option("--max-errors", common.maxErrors, "stop after this many errors")
-        ->check(CLI::PositiveNumber);
+    cmd->add_option("--max-errors", common.maxErrors, "stop after this many errors (1 or more)")
+        ->check(atLeastOne);
   };
   auto addExecution = [&](CLI::App* cmd) {
     cmd->add_option("--lib", common.libraryDirs, "folders searched for M98/G65 programs");
-    cmd->add_option("--max-jumps", common.maxJumps, "backward jumps before a runaway-loop error");
-    cmd->add_option("--max-blocks", common.maxBlocks, "blocks executed before an error");
+    cmd->add_option("--max-jumps", common.maxJumps,
+                    "backward jumps and L repeats of calls before a runaway-loop error")
+        ->check(atLeastOne);
+    cmd->add_option("--max-blocks", common.maxBlocks, "blocks executed before an error")
+        ->check(atLeastOne);
+    cmd->add_option("--max-moves", common.maxMoves,
+                    "moves (rapids, feeds, arc turns) before an error")
+        ->check(atLeastOne);
+    cmd->add_option("--max-output", common.maxOutput,
+                    "bytes written (all outputs together) before an error; 100M, 2G ...")
+        ->check(atLeastOne)
+        ->transform(CLI::AsSizeValue(false));
     cmd->add_option("--max-depth", common.maxDepth, "nested subprogram and macro calls")
         ->check(CLI::Range(1, 1000));
     cmd->add_option("--print", common.printFile, "file for DPRNT/BPRNT output");
@@ -100,20 +122,30 @@ int main(int argc, char** argv) {
     return UsageError;
   }
 
-  if (check->parsed()) return runCheck(checkFiles, common);
-  if (fmt->parsed()) return runFmt(fmtFile, fmtOut, common);
-  if (dump->parsed()) return runDumpIr(dumpFile, common);
-  if (expand->parsed()) {
-    expandOpt.common = common;
-    return runExpand(expandFile, expandOpt);
+  auto runCommand = [&]() -> int {
+    if (check->parsed()) return runCheck(checkFiles, common);
+    if (fmt->parsed()) return runFmt(fmtFile, fmtOut, common);
+    if (dump->parsed()) return runDumpIr(dumpFile, common);
+    if (expand->parsed()) {
+      expandOpt.common = common;
+      return runExpand(expandFile, expandOpt);
+    }
+    if (run->parsed()) {
+      runOpt.common = common;
+      return runRun(runFile, runOpt);
+    }
+    if (plot->parsed()) {
+      plotOpt.common = common;
+      return runPlot(plotFile, plotOpt);
+    }
+    return UsageError;
+  };
+  const int rc = runCommand();
+  // standard output is checked like any output: a full device or closed pipe is exit 2
+  std::cout.flush();
+  if (!std::cout || std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    std::cerr << "gcx: error: standard output: cannot write: " << std::strerror(errno) << '\n';
+    return rc == Ok ? UsageError : rc;
   }
-  if (run->parsed()) {
-    runOpt.common = common;
-    return runRun(runFile, runOpt);
-  }
-  if (plot->parsed()) {
-    plotOpt.common = common;
-    return runPlot(plotFile, plotOpt);
-  }
-  return UsageError;
+  return rc;
 }

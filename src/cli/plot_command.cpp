@@ -16,15 +16,13 @@ int runPlot(const std::string& file, const PlotOptions& opt) {
                                   : motion::View::XY;
   sopt.title = file;
   AtomicOutput out(opt.output);
-  if (!out.ok()) {
-    reportUsage("cannot write " + opt.output);
-    return UsageError;
-  }
+  PrintOutput print(opt.common, false);
+  if (!out.ok() || !print.ok()) return UsageError;
   motion::SvgPlotter plotter(out.stream(), sopt);
-  const bool ok = executeProgram(s, opt.common, setup, plotter, printStream(opt.common, false));
+  const bool ok = executeProgram(s, opt.common, setup, plotter, print.stream());
   s.flushDiagnostics();
   if (!ok) return ProgramErrors;
-  return out.commit() ? Ok : UsageError;
+  return print.finish() && out.commit() ? Ok : UsageError;
 }
 
 } // namespace gcx::cli

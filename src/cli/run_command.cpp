@@ -18,10 +18,7 @@ int runRun(const std::string& file, const RunOptions& opt) {
   std::optional<motion::TraceWriter> trace;
   if (!opt.trace.empty()) {
     traceFile.emplace(opt.trace);
-    if (!traceFile->ok()) {
-      reportUsage("cannot write " + opt.trace);
-      return UsageError;
-    }
+    if (!traceFile->ok()) return UsageError;
     trace.emplace(traceFile->stream(), [&](FileId id) { return s.sources().name(id); });
     tee.add(*trace);
   }
@@ -29,10 +26,12 @@ int runRun(const std::string& file, const RunOptions& opt) {
   sopt.rapidRate = setup.rapidRate;
   motion::StatsCollector stats(sopt);
   tee.add(stats);
-  const bool ok = executeProgram(s, opt.common, setup, tee, printStream(opt.common, false));
+  PrintOutput print(opt.common, false);
+  if (!print.ok()) return UsageError;
+  const bool ok = executeProgram(s, opt.common, setup, tee, print.stream());
   s.flushDiagnostics();
   if (!ok) return ProgramErrors;
-  if (traceFile && !traceFile->commit()) return UsageError;
+  if (!print.finish() || (traceFile && !traceFile->commit())) return UsageError;
   const motion::Stats& st = stats.stats();
   if (opt.stats) {
     std::cout << fmt::format("moves: {} rapid, {} linear, {} arc\n", st.rapidMoves, st.feedMoves,

@@ -41,6 +41,7 @@ inline constexpr const char* UnknownGCode = "GCX013";
 inline constexpr const char* ConflictingMCodes = "GCX014";
 inline constexpr const char* IncrementalNotAllowed = "GCX015";
 inline constexpr const char* TooManyDigits = "GCX016";
+inline constexpr const char* ExpressionTooDeep = "GCX017";
 // --- gcx: warnings
 inline constexpr const char* SignAlias = "GCXW01";
 inline constexpr const char* SkipLevelNine = "GCXW02";
@@ -63,6 +64,10 @@ inline constexpr const char* EndWithoutM30 = "GCX038";
 // --- gcx: the macro pass
 inline constexpr const char* RunawayLoop = "GCX040";
 inline constexpr const char* TooManyBlocks = "GCX041";
+inline constexpr const char* TooManyMoves = "GCX043";    // --max-moves
+inline constexpr const char* OutputTooLarge = "GCX044";  // --max-output
+inline constexpr const char* ValueOutOfRange = "GCX045"; // not finite, or not writable
+inline constexpr const char* PathOutsideFolders = "GCX046"; // M98 <../x>, an absolute path
 inline constexpr const char* ParameterMissing = "NCTX11";
 
 // --- gcx: setup file (--setup FILE, src/machine/setup)

@@ -10,12 +10,13 @@
 #include <string>
 
 #include "motion/event.h"
+#include "motion/interpolator.h"
 
 namespace gcx::emit {
 
 struct CanonicalOptions {
-  bool provenance = false;      // a `(file:line)` comment on each line from a new source block
-  double chordTolerance = 1e-3; // mm, for spirals
+  bool provenance = false; // a `(file:line)` comment on each line from a new source block
+  double chordTolerance = motion::kDefaultChordTolerance; // mm, for spirals
   std::function<std::string(FileId)> fileName;
 };
 

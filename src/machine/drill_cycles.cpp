@@ -103,7 +103,7 @@ bool Interpreter::drillBlock(const BlockWords& w, bool consumedAxes) {
     const auto res = cycles::expandHole(req, blockRange_, config, diags_);
     const bool ok = res && runCycleOps(res->ops, i == 1 ? res->auxAt : kNoAux, w, slot);
     if (*holes > 1) from_.chain.pop_back();
-    if (!ok) return false;
+    if (!ok || stopped_) return false;
   }
   return !ended_;
 }

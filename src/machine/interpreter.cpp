@@ -6,6 +6,7 @@
 #include "diag/codes.h"
 #include "emit/number.h"
 #include "motion/geometry.h"
+#include "motion/interpolator.h"
 
 namespace gcx::machine {
 
@@ -131,8 +132,49 @@ void Interpreter::reexpress() {
 }
 
 void Interpreter::emit(motion::Event e) {
+  if (stopped_) return;
   e.from = from_;
+  if ((e.kind == Kind::Rapid || e.kind == Kind::Feed || e.kind == Kind::Arc) && !admitMotion(e)) {
+    stopped_ = true;
+    return;
+  }
   sink_->event(e);
+  if (stopCheck_)
+    if (auto why = stopCheck_()) {
+      fail(diag::code::OutputTooLarge, blockRange_, std::move(*why));
+      stopped_ = true;
+    }
+}
+
+bool Interpreter::admitMotion(const motion::Event& e) {
+  // beyond a kilometre-scale machine by far, and below what any output writes in full
+  constexpr double kMaxCoordinate = 1e9;
+  const auto writable = [&](double v) { return std::fabs(v) < kMaxCoordinate; };
+  const bool finite = e.start.allFinite() && e.end.allFinite() && e.center.allFinite() &&
+                      e.extraEnd.allFinite() && std::isfinite(e.feed);
+  if (!finite || !writable(e.end.x()) || !writable(e.end.y()) || !writable(e.end.z()) ||
+      !writable(e.center.x()) || !writable(e.center.y()) || !writable(e.center.z()) ||
+      e.extraEnd.cwiseAbs().maxCoeff() >= kMaxCoordinate || !writable(e.feed))
+    return fail(diag::code::ValueOutOfRange, blockRange_,
+                finite ? fmt::format("the move reaches a coordinate or feed of magnitude 1e9 or "
+                                     "more (machine frame, mm)")
+                       : "the move's position or feed is not a finite number");
+  if (e.kind != Kind::Rapid && e.feed > 0 && e.feed < 1e-6)
+    return fail(diag::code::ValueOutOfRange, blockRange_,
+                fmt::format("feed {:g} is too small to write (below 0.000001)", e.feed));
+  // an arc counts its turns; a spiral the lines canonical output writes for it
+  std::uint64_t count = 1;
+  if (e.kind == Kind::Arc)
+    count = std::fabs(e.startRadius - e.endRadius) > 1e-9
+                ? motion::arcSegments(motion::ArcGeometry(e), motion::kDefaultChordTolerance)
+                : 1 + static_cast<std::uint64_t>(std::max(0, e.turns));
+  moves_ += count;
+  if (moves_ > maxMoves_)
+    return fail(diag::code::TooManyMoves, blockRange_,
+                fmt::format("more than {} moves (each arc turn counts): exceeded --max-moves "
+                            "{}; raise it with --max-moves N",
+                            maxMoves_, maxMoves_));
+  return true;
 }
 
 void Interpreter::emitLine(Kind kind, const Vec3& to, const motion::Extra& extraTo, double feed,
@@ -153,9 +195,13 @@ void Interpreter::emitLine(Kind kind, const Vec3& to, const motion::Extra& extra
 }
 
 bool Interpreter::execute(const ir::Block& block, const motion::Provenance& from) {
-  if (ended_) return false;
+  if (ended_ || stopped_) return false;
   from_ = from;
   blockRange_ = block.range;
+  return executeBlock(block) && !stopped_;
+}
+
+bool Interpreter::executeBlock(const ir::Block& block) {
   if (block.kind == ir::BlockKind::ProgramStart) return true;
   if (block.skipLevel && setup_.blockSkip.count(block.skipLevel)) return true; // nct.md §1.6
   if (block.kind == ir::BlockKind::Data) return dataInput(BlockWords{}, block);

@@ -84,6 +84,13 @@ public:
   /// For `--to nct` without cycle expansion: canned-cycle blocks pass through unexecuted; the
   /// programmed position follows the hole positions in the plane (not the drilling axis).
   void setDeferCycles(bool on) { deferCycles_ = on; }
+  /// The most moves a run may make (--max-moves): each rapid, feed and arc, and each turn of a
+  /// multi-turn arc, counts one; past it execution stops with a located error.
+  void setMaxMoves(std::uint64_t n) { maxMoves_ = n; }
+  /// Asked after every move: a reason to stop (an output limit was crossed), or nothing.
+  void setStopCheck(std::function<std::optional<std::string>()> check) {
+    stopCheck_ = std::move(check);
+  }
   /// Where G70.7-G73.7 find their contour blocks; without one they are an error.
   void setContourSource(ContourSource source) { contours_ = std::move(source); }
   /// After G71.7-G73.7: the N of the last contour block. When the contour follows the cycle
@@ -136,6 +143,7 @@ public:
   double parameter(const std::string& key, double fallback) const {
     return setup_.parameter(key, fallback);
   }
+  bool hasParameters() const { return !setup_.parameters.empty(); }
 
 private:
   struct Offsets {
@@ -147,6 +155,10 @@ private:
   };
 
   bool fail(const char* code, const SourceRange& where, std::string message);
+  bool executeBlock(const ir::Block& block);
+  /// A motion event's numbers are finite and writable, and the move limit holds; else the run
+  /// stops with a located error.
+  bool admitMotion(const motion::Event& e);
   double mm(double v) const { return state_.inch ? v * 25.4 : v; }
   Vec3 toMachine(const Vec3& program) const; // full pipeline
   void reexpress();                          // program position from the machine position
@@ -252,6 +264,9 @@ private:
   int lockedFrom_ = 0;                 // the group-15 code a tapping cycle's G63 replaced
   bool deferCycles_ = false;
   bool ended_ = false;
+  bool stopped_ = false; // a limit or a value out of range stopped the run inside a block
+  std::uint64_t moves_ = 0, maxMoves_ = UINT64_MAX;
+  std::function<std::optional<std::string>()> stopCheck_;
   bool dataMode_ = false;
 };
 

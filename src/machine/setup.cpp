@@ -645,6 +645,7 @@ std::array<double, 3> Setup::workOffset(const std::string& key) const {
 }
 
 double Setup::parameter(const std::string& key, double fallback) const {
+  if (parameters.empty()) return fallback; // the common case, asked for on every block
   const auto it = parameters.find(normaliseParameter(key).value_or(key));
   return it == parameters.end() ? fallback : it->second;
 }

@@ -13,6 +13,8 @@ namespace gcx::motion {
 /// so an arc looks like one even at a coarse tolerance; at most kMaxArcSegments.
 std::size_t arcSegments(const ArcGeometry& arc, double tol);
 inline constexpr std::size_t kMaxArcSegments = 10'000'000;
+/// The chord tolerance (mm) at which canonical output writes spirals as lines.
+inline constexpr double kDefaultChordTolerance = 1e-3;
 
 /// Appends the arc's points at t = i/n for i = 1..n (the start is left out so consecutive moves
 /// chain without duplicates; the last point is exactly the end).
