@@ -148,6 +148,7 @@ Outcome expandCanonical(const std::string& dialect, std::string_view input) {
   opt.maxErrors = Bounds::maxErrors;
   opt.maxJumps = Bounds::maxJumps;
   opt.maxBlocks = Bounds::maxBlocks;
+  opt.maxMoves = Bounds::maxMoves;
   cli::Session session(opt);
   Outcome out;
   if (!session.open(program.string())) {

@@ -55,8 +55,15 @@ TEST(FuzzHarness, ExpandTargetStartsEachRunWithAnEmptyFolder) {
   EXPECT_EQ(out.firstError, "1:5 NCTX07");
 }
 
-TEST(FuzzHarness, ExpandTargetCapsMotion) {
+TEST(FuzzHarness, ExpandTargetStopsARunawayAtItsMoveLimit) {
   const Outcome out = runTarget("expand_nct", "WHILE[1EQ1]DO1\nG0 X1\nG0 X2\nG0 X3\nEND1\nM30\n");
+  EXPECT_FALSE(out.capped);
+  EXPECT_EQ(out.firstError, "4:1 GCX043"); // move 5,001 is the third of iteration 1,667
+}
+
+TEST(FuzzHarness, ExpandTargetCapsEventsThatAreNotMoves) {
+  const Outcome out = runTarget(
+      "expand_nct", "WHILE[1EQ1]DO1\nG4 P0.001\nM3 S100\nM8\nM9\nM5\nG4 P0.001\nEND1\nM30\n");
   EXPECT_TRUE(out.capped);
   EXPECT_EQ(out.errors, 0u);
 }
