@@ -81,6 +81,13 @@ TEST(FuzzHarness, FmtTargetRoundTripsExpressions) {
   EXPECT_GT(out.outputBytes, 0u);
 }
 
+TEST(FuzzHarness, FmtTargetTakesMinusZeroAsZero) {
+  const Outcome out = runTarget("fmt_nct", "G0 X-0 Y1\nM30\n");
+  EXPECT_EQ(out.errors, 0u);
+  EXPECT_EQ(out.violation, "");
+  EXPECT_EQ(runTarget("fmt_nct", "C9 G!0\n").firstError, "1:4 2002");
+}
+
 TEST(FuzzHarness, SetupTargetLocatesAJsonSyntaxError) {
   const Outcome out = runTarget("setup_json", "{\n  \"work_offsets\": [\n}");
   EXPECT_EQ(out.errors, 1u);
