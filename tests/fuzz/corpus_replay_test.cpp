@@ -16,6 +16,14 @@ fs::path corpusOf(const std::string& target) {
   return sourceDir() / "tests" / "fuzz" / "corpus" / target;
 }
 
+TEST(FuzzCorpus, EveryTargetHasCommittedInputs) {
+  for (const std::string& target : fuzz::targetNames()) {
+    ASSERT_TRUE(fs::is_directory(corpusOf(target))) << target;
+    EXPECT_GE(std::distance(fs::directory_iterator(corpusOf(target)), fs::directory_iterator{}), 10)
+        << target;
+  }
+}
+
 TEST(FuzzCorpus, EveryInputReplaysWithinBounds) {
   std::size_t replayed = 0;
   for (const std::string& target : fuzz::targetNames()) {
