@@ -1,14 +1,20 @@
 # gcx — the two commands: `make demo` and `make test`. Both install what is missing first.
+# Robustness (docs/testing.md): `make test-sanitize` (the suite under ASan+UBSan) and `make fuzz`.
 BUILD ?= build
+SANITIZE_BUILD ?= build-sanitize
+FUZZ_BUILD ?= build-fuzz
+FUZZ_WORK ?= $(FUZZ_BUILD)/work
+FUZZ_SECONDS ?= 60
+FUZZ_JOBS ?= 1
 JOBS ?= $(shell nproc)
 APT_PACKAGES := antlr4 libantlr4-runtime-dev libeigen3-dev libfmt-dev libcli11-dev \
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev librapidcheck-dev libpng-dev \
-  cmake g++ make time
+  cmake g++ make time clang libclang-rt-14-dev llvm
 # Optional: LinuxCNC's rs274 (the differential oracle) and chromium (renders the HTML report
 # in its test); the tests that need them are skipped without them.
 OPTIONAL_PACKAGES := linuxcnc-uspace chromium
 
-.PHONY: deps build demo test bench mutate format clean
+.PHONY: deps build demo test bench mutate format clean test-sanitize fuzz-build fuzz fuzz-merge
 
 deps:
 	@scripts/install-deps.sh $(APT_PACKAGES) -- $(OPTIONAL_PACKAGES)
@@ -35,6 +41,32 @@ demo: build
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
+# Every sanitizer finding is fatal and prints its stack.
+export UBSAN_OPTIONS ?= print_stacktrace=1
+
+$(SANITIZE_BUILD)/CMakeCache.txt:
+	cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=Debug -DGCX_SANITIZE=ON -DGCX_BUILD_BENCH=OFF
+
+test-sanitize: deps $(SANITIZE_BUILD)/CMakeCache.txt
+	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
+	cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS)
+
+$(FUZZ_BUILD)/CMakeCache.txt:
+	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ \
+	  -DGCX_FUZZ=ON -DGCX_BUILD_TESTS=OFF -DGCX_BUILD_BENCH=OFF
+
+fuzz-build: deps $(FUZZ_BUILD)/CMakeCache.txt
+	cmake --build $(FUZZ_BUILD) -j $(JOBS)
+
+# Every fuzz target for FUZZ_SECONDS, FUZZ_JOBS targets at a time; prints execs, coverage and
+# corpus size per target and fails on any crash, hang (10 s) or sanitizer report.
+fuzz: fuzz-build
+	scripts/fuzz.sh run $(FUZZ_BUILD) $(FUZZ_WORK) $(FUZZ_SECONDS) $(FUZZ_JOBS)
+
+# Minimises what the fuzzer found into tests/fuzz/corpus (the regression inputs).
+fuzz-merge: fuzz-build
+	scripts/fuzz.sh merge $(FUZZ_BUILD) $(FUZZ_WORK)
+
 bench: build
 	bench/run.sh $(BUILD)
 
@@ -47,4 +79,4 @@ format:
 	clang-format -i $$(git ls-files '*.cpp' '*.h')
 
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) $(SANITIZE_BUILD) $(FUZZ_BUILD)

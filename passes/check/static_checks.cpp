@@ -49,10 +49,10 @@ void StaticChecker::literal(const ir::Word& w, const AddressSpec& spec) {
                  fmt::format("address {} takes a whole number, not {}", w.address, v));
     return;
   }
-  if (v < 0 && !spec.sign) {
-    diags_.error(
-        diag::code::DataOutOfRange, w.range,
-        fmt::format("address {} takes no sign: {}{}", w.address, w.address, formatNumber(v)));
+  if (std::signbit(v) && !spec.sign) { // signbit: `G-0` is refused too
+    diags_.error(diag::code::DataOutOfRange, w.range,
+                 fmt::format("address {} takes no sign: {}-{}", w.address, w.address,
+                             formatNumber(std::fabs(v))));
     return;
   }
   if (v < spec.min || v > spec.max)

@@ -8,6 +8,10 @@
 namespace gcx::front {
 
 namespace {
+bool isBlank(const std::string& text) {
+  return text.find_first_not_of(" \t\r") == std::string::npos;
+}
+
 constexpr std::size_t kChunk = 1 << 16;
 
 bool isPlainChar(char c) {
@@ -101,13 +105,7 @@ bool BlockReader::finishBlock(RawBlock& out) {
     return false;
   }
   if (!cur_.empty() && cur_.back() == '\r') cur_.pop_back();
-  bool blank = true;
-  for (char c : cur_)
-    if (c != ' ' && c != '\t' && c != '\r') {
-      blank = false;
-      break;
-    }
-  if (blank) {
+  if (isBlank(cur_)) {
     reset();
     return false;
   }
@@ -118,7 +116,8 @@ bool BlockReader::finishBlock(RawBlock& out) {
   out.failed = false;
   reset();
   normalize(out);
-  return true;
+  // a line of only ignored characters (a stray ')', a byte order mark) is a blank line too
+  return out.failed || !isBlank(out.lexText);
 }
 
 void BlockReader::normalize(RawBlock& b) {

@@ -21,6 +21,23 @@ TEST(InputRobustness, LonePercentIsAnEmptyProgram) {
   EXPECT_EQ(p.errors(), std::vector<std::string>{"1:1 GCX002"});
 }
 
+// Found by the fmt_nct fuzz target: such a line was an empty block, which `fmt` printed as a
+// blank line, so the printed program had one block less.
+TEST(InputRobustness, LineOfOnlyAStrayParenIsABlankLine) {
+  Parsed p = parseNct("G0 X1\n)\nM30\n");
+  EXPECT_TRUE(p.errors().empty()) << p.rendered();
+  EXPECT_EQ(p.warnings(), std::vector<std::string>{"2:1 GCXW03"});
+  ASSERT_EQ(p.blocks.size(), 2u);
+  EXPECT_EQ(p.blocks[1].range.begin.line, 3u);
+}
+
+TEST(InputRobustness, LineOfOnlyAByteOrderMarkIsABlankLine) {
+  Parsed p = parseNct("\xEF\xBB\xBF\nG0 X1\n");
+  EXPECT_TRUE(p.errors().empty()) << p.rendered();
+  ASSERT_EQ(p.blocks.size(), 1u);
+  EXPECT_EQ(p.blocks[0].range.begin.line, 2u);
+}
+
 TEST(InputRobustness, NulByteIsABinaryFile) {
   std::string text = "G0 X1\nG1 X2";
   text += '\0';

@@ -1,0 +1,107 @@
+// The fuzz targets' entry points in the normal build: the committed fuzz corpus replays without a
+// crash, a broken property or unbounded output, and the harness itself does what it claims.
+#include <gtest/gtest.h>
+
+#include "fuzz/entry_points.h"
+#include "support/test_support.h"
+
+namespace gcx::test {
+namespace {
+
+using fuzz::Bounds;
+using fuzz::Outcome;
+using fuzz::runTarget;
+
+fs::path corpusOf(const std::string& target) {
+  return sourceDir() / "tests" / "fuzz" / "corpus" / target;
+}
+
+TEST(FuzzCorpus, EveryTargetHasCommittedInputs) {
+  for (const std::string& target : fuzz::targetNames()) {
+    ASSERT_TRUE(fs::is_directory(corpusOf(target))) << target;
+    EXPECT_GE(std::distance(fs::directory_iterator(corpusOf(target)), fs::directory_iterator{}), 10)
+        << target;
+  }
+}
+
+TEST(FuzzCorpus, EveryInputReplaysWithinBounds) {
+  std::size_t replayed = 0;
+  for (const std::string& target : fuzz::targetNames()) {
+    if (!fs::is_directory(corpusOf(target))) continue;
+    for (const auto& entry : fs::directory_iterator(corpusOf(target))) {
+      const Outcome out = runTarget(target, readFile(entry.path()));
+      const std::string name = target + "/" + entry.path().filename().string();
+      EXPECT_EQ(out.violation, "") << name;
+      EXPECT_LE(out.errors, Bounds::maxErrors) << name;
+      // the cap is checked per event, so one event's text may pass it
+      EXPECT_LE(out.outputBytes, Bounds::maxOutputBytes + 4096) << name;
+      ++replayed;
+    }
+  }
+  EXPECT_GT(replayed, 0u);
+}
+
+TEST(FuzzHarness, CheckTargetReportsTheLocatedError) {
+  const Outcome out = runTarget("check_nct", "G0 X0 Y0\nG1 X1.2.3 F100\nM30\n");
+  EXPECT_EQ(out.errors, 1u);
+  EXPECT_EQ(out.firstError, "2:8 2064");
+  EXPECT_EQ(out.violation, "");
+}
+
+TEST(FuzzHarness, ExpandTargetCallsTheFilesAfterSeparators) {
+  const Outcome split = runTarget("expand_nct", "M98 P9001\nM30\n@@\nG0 X1 Y2\nM99\n");
+  const Outcome inline_ = runTarget("expand_nct", "G0 X1 Y2\nM30\n");
+  EXPECT_EQ(split.firstError, "");
+  EXPECT_FALSE(split.capped);
+  EXPECT_GT(inline_.outputBytes, 0u);
+  EXPECT_EQ(split.outputBytes, inline_.outputBytes);
+}
+
+TEST(FuzzHarness, ExpandTargetStartsEachRunWithAnEmptyFolder) {
+  (void)runTarget("expand_nct", "M30\n@@\nG0 X1\nM99\n");
+  const Outcome out = runTarget("expand_nct", "M98 P9001\nM30\n");
+  EXPECT_EQ(out.firstError, "1:5 NCTX07");
+}
+
+TEST(FuzzHarness, ExpandTargetStopsARunawayAtItsMoveLimit) {
+  const Outcome out = runTarget("expand_nct", "WHILE[1EQ1]DO1\nG0 X1\nG0 X2\nG0 X3\nEND1\nM30\n");
+  EXPECT_FALSE(out.capped);
+  EXPECT_EQ(out.firstError, "4:1 GCX043"); // move 5,001 is the third of iteration 1,667
+}
+
+TEST(FuzzHarness, ExpandTargetCapsEventsThatAreNotMoves) {
+  const Outcome out = runTarget(
+      "expand_nct", "WHILE[1EQ1]DO1\nG4 P0.001\nM3 S100\nM8\nM9\nM5\nG4 P0.001\nEND1\nM30\n");
+  EXPECT_TRUE(out.capped);
+  EXPECT_EQ(out.errors, 0u);
+}
+
+TEST(FuzzHarness, ExpandTargetStopsALoopWithoutMotionAtItsJumpLimit) {
+  const Outcome out = runTarget("expand_nct", "WHILE[1EQ1]DO1\n#1=#1+1\nEND1\nM30\n");
+  EXPECT_FALSE(out.capped);
+  EXPECT_EQ(out.firstError, "3:1 GCX040");
+}
+
+TEST(FuzzHarness, FmtTargetRoundTripsExpressions) {
+  const Outcome out = runTarget("fmt_nct", "#1=[1+2]*SIN[30]\nG1 X#1 Y-[#1/2] F100\nM30\n");
+  EXPECT_EQ(out.errors, 0u);
+  EXPECT_EQ(out.violation, "");
+  EXPECT_GT(out.outputBytes, 0u);
+}
+
+TEST(FuzzHarness, FmtTargetTakesMinusZeroAsZero) {
+  const Outcome out = runTarget("fmt_nct", "G0 X-0 Y1\nM30\n");
+  EXPECT_EQ(out.errors, 0u);
+  EXPECT_EQ(out.violation, "");
+  EXPECT_EQ(runTarget("fmt_nct", "C9 G!0\n").firstError, "1:4 2002");
+}
+
+TEST(FuzzHarness, SetupTargetLocatesAJsonSyntaxError) {
+  const Outcome out = runTarget("setup_json", "{\n  \"work_offsets\": [\n}");
+  EXPECT_EQ(out.errors, 1u);
+  EXPECT_EQ(out.violation, "");
+  EXPECT_EQ(out.firstError.substr(0, 2), "3:");
+}
+
+} // namespace
+} // namespace gcx::test
