@@ -37,6 +37,10 @@ demo: build
 	@echo "== gcx plot: the tool path as SVG"
 	$(BUILD)/gcx plot examples/nct/O1001.nct --setup examples/nct/O1001.setup.json -o $(BUILD)/O1001.svg
 	@echo "wrote $(BUILD)/O1001.svg"
+	@echo "== gcx equiv: the canonical output moves the tool exactly like the program"
+	$(BUILD)/gcx expand examples/nct/O1001.nct --to canonical --setup examples/nct/O1001.setup.json -o $(BUILD)/O1001.ngc
+	$(BUILD)/gcx equiv examples/nct/O1001.nct $(BUILD)/O1001.ngc --setup examples/nct/O1001.setup.json --setup-b none --report $(BUILD)/O1001-equiv.html
+	@echo "wrote $(BUILD)/O1001-equiv.html"
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
