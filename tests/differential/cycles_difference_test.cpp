@@ -273,10 +273,11 @@ void expectCanonicalOrientedStops(const std::string& name, long stops) {
   emit::CanonicalEmitter emitter(canonical);
   const ProgramRun ours = runNct(readFile(cyclesDir() / (name + ".nct")), {}, &emitter);
   ASSERT_TRUE(ours.errors.empty()) << ours.rendered;
-  const oracle::Rs274Result raw = oracle::Rs274().run(canonical.str());
+  const std::string text = canonical.str(); // CanonOptions::programText only views it
+  const oracle::Rs274Result raw = oracle::Rs274().run(text);
   ASSERT_TRUE(raw.ok()) << raw.summary();
   oracle::CanonOptions copt;
-  copt.programText = canonical.str();
+  copt.programText = text;
   const std::vector<motion::Event> theirs = oracle::parseCanon(raw.canonLines, copt);
   const auto orients = [](const std::vector<motion::Event>& events) {
     return std::count_if(events.begin(), events.end(), [](const motion::Event& e) {
