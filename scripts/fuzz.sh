@@ -17,8 +17,8 @@ seeds() {
     rm -rf "$work/$t/seeds"
     mkdir -p "$work/$t/seeds" "$work/$t/corpus" "$work/$t/artifacts"
     case $t in
-    *_nct) find tests examples -name '*.nct' -size -64k ;;
-    *_json) find tests examples -name '*.json' -size -64k ;;
+    *_nct) find tests examples -type f -name '*.nct' -size -64k ;;
+    *_json) find tests examples -type f -name '*.json' -size -64k ;;
     esac | while read -r f; do cp "$f" "$work/$t/seeds/$(echo "$f" | tr / _)"; done
   done
 }
