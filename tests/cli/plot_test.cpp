@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <fmt/format.h>
 #include <regex>
+#include <unistd.h>
 
 #include "support/test_support.h"
 
@@ -17,7 +18,10 @@ struct Picture {
 };
 
 Picture plot(const std::string& example, const std::string& view, const std::string& args = "") {
-  const fs::path out = fs::temp_directory_path() / fmt::format("gcx-plot-{}-{}.svg", example, view);
+  // ctest runs tests as parallel processes: a name of this process's own, not just the example's
+  static int serial = 0;
+  const fs::path out = fs::temp_directory_path() /
+                       fmt::format("gcx-plot-{}-{}-{}-{}.svg", example, view, getpid(), serial++);
   const std::string cmd =
       fmt::format("{} plot {} -o {} --view {} {} 2>/dev/null", GCX_BINARY,
                   (sourceDir() / "examples" / "nct" / example).string(), out.string(), view, args);
