@@ -22,6 +22,8 @@ endfunction()
 gcx_robust(nested_brackets_check 1 "nested_brackets.nct:1:68: error: expression nested deeper than 64 levels (brackets, signs, functions) [GCX017]" check ${ROBUST}/nested_brackets.nct)
 gcx_robust(nested_brackets_run 1 "nested_brackets.nct:1:68: error: expression nested deeper than 64 levels" run ${ROBUST}/nested_brackets.nct)
 gcx_robust(nested_brackets_fmt 1 "nested_brackets.nct:1:68: error: expression nested deeper" fmt ${ROBUST}/nested_brackets.nct)
+# a character the lexer refuses inside deep brackets: reported before the parser recurses (found by fuzz)
+gcx_robust(nested_brackets_bad_character 1 "nested_brackets_bad_character.nct:1:5004: error: unexpected character '_' [2064]" check ${ROBUST}/nested_brackets_bad_character.nct)
 
 # 2. runaways: each kind stops with its limit, which the message names with the flag
 gcx_robust(while_runaway 1 "while_runaway.nct:4:1: error: loop DO1 repeated more than 1000 times (exceeded --max-jumps 1000; raise it with --max-jumps N) [GCX040]" run ${ROBUST}/while_runaway.nct --max-jumps 1000)

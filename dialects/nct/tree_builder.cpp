@@ -721,16 +721,18 @@ bool GrammarParser::parse(const front::RawBlock& raw, ir::Block& out, diag::Engi
       antlr4::atn::PredictionMode::SLL);
   m.parser.setErrorHandler(std::make_shared<antlr4::BailErrorStrategy>());
   m.tokens.fill(); // the lexer does not recurse; the depth is checked before the parser does
-  if (!m.first.set && !checkNestingDepth(raw, m.tokens.getTokens(), diags)) return false;
+  // A lexer error is reported without parsing: the parser would recurse through tokens the
+  // depth check has not seen.
+  if (m.first.set) {
+    m.report(raw, diags);
+    return false;
+  }
+  if (!checkNestingDepth(raw, m.tokens.getTokens(), diags)) return false;
   P::BlockContext* tree = nullptr;
   try {
     tree = m.parser.block();
   } catch (const antlr4::ParseCancellationException&) {
     tree = nullptr;
-  }
-  if (m.first.set) { // the lexer already failed: no need for a second parse
-    m.report(raw, diags);
-    return false;
   }
   if (!tree || m.cancel.hit) {
     // 2nd attempt: full LL with error reporting, for a correct verdict and a located error.
