@@ -68,8 +68,8 @@ motion::Provenance Expander::provenance(const ir::Block& b) const {
     if (i > 0) p.chain.push_back({f.callSite, f.what});
     for (const Loop& l : f.loops) {
       const ir::Block& head = f.program->blocks[l.head];
-      p.chain.push_back({head.range.begin,
-                         fmt::format("loop DO{} iteration {}", head.stmt->loopId, l.iteration)});
+      p.chain.push_back({head.range.begin, fmt::format("loop DO{} iteration {}",
+                                                       head.stmts.front().loopId, l.iteration)});
     }
   }
   return p;
@@ -124,14 +124,14 @@ bool Expander::step() {
     ++f.pc;
     return true;
   }
-  if (b.stmt) return statement(f, b);
+  if (!b.stmts.empty()) return statement(f, b);
   return ncBlock(f, b);
 }
 
 // ---------------------------------------------------------------- statements
 
 bool Expander::statement(Frame& f, const ir::Block& b) {
-  const ir::Stmt& s = *b.stmt;
+  const ir::Stmt& s = b.stmts.front(); // an NCT block holds at most one
   switch (s.kind) {
   case ir::StmtKind::Assign:
     if (!assign(s)) return false;
@@ -192,6 +192,12 @@ bool Expander::statement(Frame& f, const ir::Block& b) {
   case ir::StmtKind::Fclos: // the print channel is the run's print output (DPRNT)
     ++f.pc;
     return true;
+  case ir::StmtKind::Guard: // other dialects' statements; the NCT front end never builds them
+  case ir::StmtKind::Jump:
+  case ir::StmtKind::Call:
+  case ir::StmtKind::CycleCall:
+    return fail(diag::code::NotImplemented, s.range,
+                "this statement is not implemented by the macro pass yet");
   }
   return true;
 }
@@ -201,7 +207,7 @@ bool Expander::loopBack(Frame& f, std::size_t head, const SourceRange& where) {
     return fail(diag::code::RunawayLoop, where,
                 fmt::format("loop DO{} repeated more than {} times (exceeded --max-jumps {}; "
                             "raise it with --max-jumps N)",
-                            f.program->blocks[head].stmt->loopId, limits_.maxJumps,
+                            f.program->blocks[head].stmts.front().loopId, limits_.maxJumps,
                             limits_.maxJumps));
   // END returns to the test of its paired WHILE even when the loop was entered by GOTO (W7)
   auto it =
@@ -210,7 +216,7 @@ bool Expander::loopBack(Frame& f, std::size_t head, const SourceRange& where) {
     ++it->iteration;
   else
     f.loops.push_back({head, 2});
-  const ir::Stmt& s = *f.program->blocks[head].stmt;
+  const ir::Stmt& s = f.program->blocks[head].stmts.front();
   if (s.kind == ir::StmtKind::While) {
     auto c = eval_.condition(*s.cond);
     if (!c) return false;
@@ -374,7 +380,7 @@ bool Expander::contour(std::int64_t ns, std::int64_t nf, std::vector<machine::Co
     const ir::Block& b = program.blocks[i];
     machine::ContourBlock c;
     c.from = provenance(b);
-    if (b.stmt)
+    if (!b.stmts.empty())
       c.block = b; // the interpreter reports it
     else if (!flatten(b, c.block))
       return false;
