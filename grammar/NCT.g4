@@ -15,7 +15,7 @@ block
 
 programStart : PERCENT (O NUMBER)? ;      // `%` or `%O0001` heading line (nct.md §1.8)
 blockSkip    : SLASH NUMBER? ;             // `/` = `/1`; `/n` (nct.md §1.6)
-sequenceNumber : N NUMBER ;                // the first N of a block (nct.md §1.7)
+sequenceNumber : N PLUS? NUMBER ;          // the first N of a block (§1.7); `+` is discarded (§1.2 rule 3)
 
 body
     : statement

@@ -120,8 +120,9 @@ FastResult parseFast(const front::RawBlock& raw, ir::Block& out, diag::Engine& d
     p.digitsPos = static_cast<std::uint32_t>(d);
     p.digitsLen = static_cast<std::uint32_t>(i - d);
     p.len = static_cast<std::uint32_t>(i - p.pos);
-    // the grammar's `sequenceNumber : N NUMBER` takes only an unsigned N before any word
-    if (c == 'N' && !anyWord && !p.incremental && !p.sign) p.kind = Piece::Sequence;
+    // the grammar's `sequenceNumber : N PLUS? NUMBER` takes an N before any word, without a
+    // minus (a `+` is discarded, nct.md §1.2 rule 3)
+    if (c == 'N' && !anyWord && !p.incremental && p.sign != '-') p.kind = Piece::Sequence;
     anyWord = true;
     if (!push(p)) return FastResult::Declined;
   }

@@ -90,6 +90,19 @@ TEST(NctSpec_1_7, FirstNIsTheBlockNumberASecondNIsAWord) {
   EXPECT_EQ(b.words.back().number, 250);
 }
 
+// A `+` is discarded (§1.2 rule 3), so `N+100` is block number 100 on both parse paths, and
+// `fmt` prints it back as `N100` without changing the block (found by the fmt round-trip fuzzer).
+TEST(NctSpec_1_7, PlusSignedFirstNIsTheBlockNumber) {
+  for (const char* text : {"N+100 G91 G0 X100", "N+100 G91 G0 X#1"}) { // fast path, grammar
+    const ir::Block b = only(parseNct(text));
+    EXPECT_EQ(b.sequence, 100) << text;
+    EXPECT_EQ(b.sequenceRange.length, 5u) << text;
+    EXPECT_EQ(b.words.front().address, "G") << text;
+  }
+  EXPECT_EQ(printed("N+100 G91 G0 X100"), "N100 G91 G0 X100");
+  EXPECT_EQ(parseNct("N-100 G0 X1").errors(), std::vector<std::string>{"1:1 2002"});
+}
+
 TEST(NctSpec_1_8, PercentLineAndProgramNumber) {
   Parsed p = parseNct("%O0101\nG0 X1\nM30\n%\n");
   ASSERT_TRUE(p.errors().empty()) << p.rendered();
