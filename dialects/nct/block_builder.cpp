@@ -48,10 +48,11 @@ BlockBuilder::BlockBuilder(const front::RawBlock& raw, ir::Block& out, diag::Eng
   out_.kind = ir::BlockKind::Normal;
   out_.skipLevel = 0;
   out_.sequence.reset();
+  out_.sequenceText.clear();
   out_.sequenceRange = {};
-  out_.programNumber.reset();
+  out_.programName.clear();
   out_.words.clear();
-  out_.stmt.reset();
+  out_.stmts.clear();
   out_.comments.clear();
   out_.range = SourceRange{raw.begin, static_cast<std::uint32_t>(raw.text.size())};
   out_.lastLine = raw.lastLine();
@@ -103,6 +104,7 @@ void BlockBuilder::sequence(std::size_t pos, std::size_t len, std::string_view d
     return;
   }
   out_.sequence = n;
+  out_.sequenceText.assign(digits);
   out_.sequenceRange = range(pos, len);
 }
 
@@ -115,30 +117,43 @@ void BlockBuilder::programStart(std::size_t pos, std::string_view number) {
     ok_ = false;
     return;
   }
-  out_.programNumber = n;
+  out_.programName = fmt::format("O{:04}", n); // the number names the program: O1 is O0001
+}
+
+ir::Stmt& BlockBuilder::newStmt(ir::StmtKind kind, std::size_t pos, std::size_t len) {
+  ir::Stmt& s = out_.stmts.emplace_back();
+  s.kind = kind;
+  s.range = range(pos, len);
+  s.order = static_cast<std::uint32_t>(pos);
+  return s;
 }
 
 ir::Word& BlockBuilder::newWord(std::string_view address, std::size_t pos, std::size_t len) {
   ir::Word& w = out_.words.emplace_back();
   w.address.assign(address);
   w.range = range(pos, len);
+  w.order = static_cast<std::uint32_t>(pos);
   return w;
 }
 
 void BlockBuilder::literalWord(std::string_view address, std::size_t pos, std::size_t len,
-                               bool incremental, bool negative, std::string_view digits) {
+                               bool incremental, char signText, std::string_view digits) {
+  const bool negative = signText == '-';
   ir::Word& w = newWord(address, pos, len);
   w.incremental = incremental;
   w.kind = ir::ValueKind::Number;
   const std::size_t numPos = pos + len - digits.size();
   double v = number(digits, numPos);
   w.number = negative ? -v : v;
+  if (signText) w.text.push_back(signText);
+  w.text.append(digits);
 }
 
 void BlockBuilder::comment(std::size_t pos, std::size_t len) {
   ir::Comment c;
   c.text = raw_.text.substr(pos + 1, len >= 2 ? len - 2 : 0);
   c.range = range(pos, len);
+  c.order = static_cast<std::uint32_t>(pos);
   out_.comments.push_back(std::move(c));
 }
 

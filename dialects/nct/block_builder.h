@@ -20,15 +20,17 @@ public:
   void sequence(std::size_t pos, std::size_t len, std::string_view digits);
   /// `%` or `%O0001`.
   void programStart(std::size_t pos, std::string_view number);
-  /// An address with a literal number: `X-40`, `XI-40`, `G84.2`.
+  /// An address with a literal number: `X-40`, `XI-40`, `G84.2`; sign is '-', '+' or 0 (none).
   void literalWord(std::string_view address, std::size_t pos, std::size_t len, bool incremental,
-                   bool negative, std::string_view digits);
+                   char sign, std::string_view digits);
   /// A comment whose '(' is at pos and ')' at pos+len-1.
   void comment(std::size_t pos, std::size_t len);
 
   /// A number token as a double; reports digits beyond the profile limit.
   double number(std::string_view digits, std::size_t pos);
   ir::Word& newWord(std::string_view address, std::size_t pos, std::size_t len);
+  /// The block's next statement, placed in source order at pos.
+  ir::Stmt& newStmt(ir::StmtKind kind, std::size_t pos, std::size_t len);
   SourceRange range(std::size_t pos, std::size_t len) const { return raw_.rangeAt(pos, len); }
   const front::RawBlock& raw() const { return raw_; }
   ir::Block& block() { return out_; }

@@ -10,8 +10,7 @@ struct Piece {
   enum Kind : unsigned char { Skip, Sequence, Word, Comment } kind;
   char letter = 0;
   bool incremental = false;
-  bool negative = false;
-  bool signed_ = false;
+  char sign = 0;         // '-', '+' or none
   std::uint32_t pos = 0; // first byte of the piece
   std::uint32_t len = 0;
   std::uint32_t digitsPos = 0;
@@ -112,8 +111,7 @@ FastResult parseFast(const front::RawBlock& raw, ir::Block& out, diag::Engine& d
       skipBlanks();
     }
     if (i < n && (s[i] == '-' || s[i] == '+')) {
-      p.negative = s[i] == '-';
-      p.signed_ = true;
+      p.sign = s[i];
       ++i;
       skipBlanks();
     }
@@ -123,7 +121,7 @@ FastResult parseFast(const front::RawBlock& raw, ir::Block& out, diag::Engine& d
     p.digitsLen = static_cast<std::uint32_t>(i - d);
     p.len = static_cast<std::uint32_t>(i - p.pos);
     // the grammar's `sequenceNumber : N NUMBER` takes only an unsigned N before any word
-    if (c == 'N' && !anyWord && !p.incremental && !p.signed_) p.kind = Piece::Sequence;
+    if (c == 'N' && !anyWord && !p.incremental && !p.sign) p.kind = Piece::Sequence;
     anyWord = true;
     if (!push(p)) return FastResult::Declined;
   }
@@ -143,8 +141,7 @@ FastResult parseFast(const front::RawBlock& raw, ir::Block& out, diag::Engine& d
       b.comment(p.pos, p.len);
       break;
     case Piece::Word:
-      b.literalWord(std::string_view(&p.letter, 1), p.pos, p.len, p.incremental, p.negative,
-                    digits);
+      b.literalWord(std::string_view(&p.letter, 1), p.pos, p.len, p.incremental, p.sign, digits);
       break;
     }
   }

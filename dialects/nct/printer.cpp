@@ -106,6 +106,8 @@ void print(std::string& out, const ir::Expr& e, Level) {
   case ir::ExprKind::AxisNumber:
     out += "AXNUM[" + e.name + "]";
     return;
+  case ir::ExprKind::Assign: // WL4's #n=e in an expression: not NCT, lowered by translation
+    return;
   case ir::ExprKind::Parameter: {
     out += "PRM[";
     print(out, e.args[0], Additive);
@@ -232,6 +234,11 @@ void printStatement(std::string& out, const ir::Stmt& s) {
   case ir::StmtKind::Fclos:
     out += "FCLOS";
     return;
+  case ir::StmtKind::Guard: // other dialects' statements: the NCT front end never builds them,
+  case ir::StmtKind::Jump:  // and translation lowers them before NCT is printed
+  case ir::StmtKind::Call:
+  case ir::StmtKind::CycleCall:
+    return;
   }
 }
 
@@ -250,19 +257,16 @@ std::string printBlock(const ir::Block& b) {
   };
   if (b.kind == ir::BlockKind::ProgramStart) {
     out += '%';
-    if (b.programNumber) {
-      std::string n = std::to_string(*b.programNumber);
-      out += 'O' + std::string(n.size() < 4 ? 4 - n.size() : 0, '0') + n;
-    }
+    out += b.programName;
   }
   if (b.skipLevel) out += b.skipLevel == 1 ? std::string("/") : '/' + std::to_string(b.skipLevel);
   if (b.sequence) {
     sep();
     out += 'N' + std::to_string(*b.sequence);
   }
-  if (b.stmt) {
+  for (const ir::Stmt& s : b.stmts) {
     sep();
-    printStatement(out, *b.stmt);
+    printStatement(out, s);
   }
   for (const ir::Word& w : b.words) {
     sep();

@@ -198,8 +198,8 @@ private:
   void value(const std::string& address, std::size_t pos, std::size_t len, bool incremental,
              P::ValueContext* v) {
     if (auto* nv = dynamic_cast<P::NumberValueContext*>(v)) {
-      const bool negative = nv->sign() && nv->sign()->MINUS();
-      b_.literalWord(address, pos, len, incremental, negative, nv->NUMBER()->getText());
+      const char sign = !nv->sign() ? 0 : nv->sign()->MINUS() ? '-' : '+';
+      b_.literalWord(address, pos, len, incremental, sign, nv->NUMBER()->getText());
       return;
     }
     ir::Word& w = b_.newWord(address, pos, len);
@@ -348,11 +348,7 @@ private:
   }
 
   ir::Stmt& newStmt(P::StatementContext* c, ir::StmtKind kind) {
-    b_.block().stmt.emplace();
-    ir::Stmt& s = *b_.block().stmt;
-    s.kind = kind;
-    s.range = range(c);
-    return s;
+    return b_.newStmt(kind, start(c), length(c));
   }
 
   void assignment(ir::Stmt& s, P::AssignmentContext* a) {

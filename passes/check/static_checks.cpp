@@ -38,7 +38,8 @@ void StaticChecker::block(const ir::Block& b) {
                    fmt::format("block number N{} is out of range 1-99999999", *b.sequence));
     labels_.insert(*b.sequence);
   }
-  if (b.stmt) statement(*b.stmt);
+  for (const ir::Stmt& s : b.stmts)
+    statement(s);
   words(b);
 }
 

@@ -165,6 +165,9 @@ std::optional<Value> Evaluator::compute(const ir::Expr& e) {
   }
   case ExprKind::Parameter:
     return parameter(e);
+  case ExprKind::Assign:
+    error(diag::code::NotImplemented, e, "an assignment inside an expression is not evaluated yet");
+    return std::nullopt;
   }
   return std::nullopt;
 }
@@ -315,7 +318,14 @@ std::optional<Value> Evaluator::call(const ir::Expr& e) {
     return Value::of(choices_.fixFloors ? std::floor(x) : std::trunc(x));
   case ir::Func::Fup: // away from zero; a whole number stays (§12 Q2)
     return Value::of(x >= 0 ? std::ceil(x) : std::floor(x));
+  case ir::Func::Round:
+  case ir::Func::Floor:
+  case ir::Func::Ceil:
+  case ir::Func::Atan2:
+    break;
   }
+  error(diag::code::NotImplemented, e,
+        fmt::format("{} is not evaluated yet", ir::spelling(e.func)));
   return std::nullopt;
 }
 

@@ -52,8 +52,8 @@ motion::Provenance Expander::provenance(const ir::Block& b) const {
     if (i > 0) p.chain.push_back({f.callSite, f.what});
     for (const Loop& l : f.loops) {
       const ir::Block& head = f.program->blocks[l.head];
-      p.chain.push_back({head.range.begin,
-                         fmt::format("loop DO{} iteration {}", head.stmt->loopId, l.iteration)});
+      p.chain.push_back({head.range.begin, fmt::format("loop DO{} iteration {}",
+                                                       head.stmts.front().loopId, l.iteration)});
     }
   }
   return p;
@@ -112,7 +112,7 @@ bool Expander::step() {
     ++f.pc;
     return true;
   }
-  if (b.stmt) return statement(f, b);
+  if (!b.stmts.empty()) return statement(f, b);
   return ncBlock(f, b);
 }
 

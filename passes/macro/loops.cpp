@@ -9,7 +9,7 @@
 namespace gcx::macro {
 
 bool Expander::statement(Frame& f, const ir::Block& b) {
-  const ir::Stmt& s = *b.stmt;
+  const ir::Stmt& s = b.stmts.front(); // an NCT block holds at most one
   switch (s.kind) {
   case ir::StmtKind::Assign:
     if (!assign(s)) return false;
@@ -53,6 +53,12 @@ bool Expander::statement(Frame& f, const ir::Block& b) {
   case ir::StmtKind::Fclos: // the print channel is the run's print output (DPRNT)
     ++f.pc;
     return true;
+  case ir::StmtKind::Guard: // other dialects' statements; the NCT front end never builds them
+  case ir::StmtKind::Jump:
+  case ir::StmtKind::Call:
+  case ir::StmtKind::CycleCall:
+    return fail(diag::code::NotImplemented, s.range,
+                "this statement is not implemented by the macro pass yet");
   }
   return true;
 }
@@ -83,7 +89,7 @@ bool Expander::loopBack(Frame& f, std::size_t head, const SourceRange& where) {
     return fail(diag::code::RunawayLoop, where,
                 fmt::format("loop DO{} repeated more than {} times (exceeded --max-jumps {}; "
                             "raise it with --max-jumps N)",
-                            f.program->blocks[head].stmt->loopId, limits_.maxJumps,
+                            f.program->blocks[head].stmts.front().loopId, limits_.maxJumps,
                             limits_.maxJumps));
   // END returns to the test of its paired WHILE even when the loop was entered by GOTO (W7)
   auto it =
@@ -92,7 +98,7 @@ bool Expander::loopBack(Frame& f, std::size_t head, const SourceRange& where) {
     ++it->iteration;
   else
     f.loops.push_back({head, 2});
-  const ir::Stmt& s = *f.program->blocks[head].stmt;
+  const ir::Stmt& s = f.program->blocks[head].stmts.front();
   if (s.kind == ir::StmtKind::While) {
     auto c = eval_.condition(*s.cond);
     if (!c) return false;

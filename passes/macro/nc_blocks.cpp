@@ -108,7 +108,7 @@ bool Expander::contour(std::int64_t ns, std::int64_t nf, std::vector<machine::Co
     const ir::Block& b = program.blocks[i];
     machine::ContourBlock c;
     c.from = provenance(b);
-    if (b.stmt)
+    if (!b.stmts.empty())
       c.block = b; // the interpreter reports it
     else if (!flatten(b, c.block))
       return false;

@@ -54,12 +54,12 @@ const LoadedProgram* ProgramLibrary::load(const std::string& path) {
   for (std::size_t i = 0; i < prog->blocks.size(); ++i) {
     const ir::Block& blk = prog->blocks[i];
     if (blk.sequence && blk.kind == ir::BlockKind::Normal) prog->labels[*blk.sequence].push_back(i);
-    if (!blk.stmt) continue;
-    const ir::StmtKind k = blk.stmt->kind;
+    if (blk.stmts.empty()) continue;
+    const ir::StmtKind k = blk.stmts.front().kind;
     if (k == ir::StmtKind::While || k == ir::StmtKind::Do) open.push_back(i);
     if (k == ir::StmtKind::End) {
       for (auto it = open.rbegin(); it != open.rend(); ++it)
-        if (prog->blocks[*it].stmt->loopId == blk.stmt->loopId) {
+        if (prog->blocks[*it].stmts.front().loopId == blk.stmts.front().loopId) {
           prog->loopPartner[*it] = i;
           prog->loopPartner[i] = *it;
           open.erase(std::next(it).base());

@@ -46,7 +46,10 @@ int expandToNct(Session& s, const ExpandOptions& opt, const machine::Setup& setu
   cycles::KeptContours contours(main->blocks, s.dialect().profile());
   expander.onFlatBlock([&](const ir::Block& b) {
     ir::Block flat = b; // comments and numbers do not survive, but those kept cycles refer to
-    if (flat.sequence && !contours.keepsNumber(*flat.sequence)) flat.sequence.reset();
+    if (flat.sequence && !contours.keepsNumber(*flat.sequence)) {
+      flat.sequence.reset();
+      flat.sequenceText.clear();
+    }
     flat.comments.clear();
     if (flat.words.empty()) return;
     contours.written(flat);

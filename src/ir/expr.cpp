@@ -1,5 +1,8 @@
 #include "ir/expr.h"
 
+// The spellings name each operator and function distinctly (gcx dump); a dialect's printer
+// spells them its own way.
+
 namespace gcx::ir {
 
 const char* spelling(Op op) {
@@ -26,13 +29,36 @@ const char* spelling(Op op) {
     return "OR";
   case Op::Xor:
     return "XOR";
+  case Op::Pow:
+    return "**";
+  case Op::FloorMod:
+    return "FLOORMOD";
+  case Op::Eq:
+    return "==";
+  case Op::Ne:
+    return "<>";
+  case Op::Lt:
+    return "<";
+  case Op::Le:
+    return "<=";
+  case Op::Gt:
+    return ">";
+  case Op::Ge:
+    return ">=";
+  case Op::LogicalAnd:
+    return "&&";
+  case Op::LogicalOr:
+    return "||";
+  case Op::LogicalXor:
+    return "^^";
   }
   return "?";
 }
 
 const char* spelling(Func f) {
-  static const char* const names[] = {"SIN",  "COS", "TAN", "ASIN", "ACOS", "ATAN",
-                                      "SQRT", "EXP", "LN",  "ABS",  "FIX",  "FUP"};
+  static const char* const names[] = {"SIN",   "COS",   "TAN",  "ASIN", "ACOS", "ATAN",
+                                      "SQRT",  "EXP",   "LN",   "ABS",  "FIX",  "FUP",
+                                      "ROUND", "FLOOR", "CEIL", "ATAN2"};
   return names[static_cast<int>(f)];
 }
 

@@ -1,4 +1,7 @@
-// Macro expressions (nct-macro.md §3), dialect-neutral: numbers, variables, operators, functions.
+// Macro expressions, dialect-neutral: numbers, variables, operators, functions (nct-macro.md §3,
+// wl4.md §6.3). Where dialects give one spelling different meanings (NCT AND is bitwise, WL4 AND
+// logical; NCT FIX truncates, WL4 FIX floors) the IR has distinct operators and functions, and
+// each front end picks the one its dialect means.
 #pragma once
 #include <string>
 #include <vector>
@@ -18,10 +21,51 @@ enum class ExprKind : unsigned char {
   Call,       // func applied to args[0]
   AxisNumber, // AXNUM[letter]; letter in `name`
   Parameter,  // PRM[id(,bit)](/[index]); args in order id, bit?, index?
+  Assign,     // #n=e inside an expression: args[0] = the variable, args[1] = e; yields e's value
 };
 
-enum class Op : unsigned char { Neg, Plus, Not, Add, Sub, Mul, Div, Mod, And, Or, Xor };
-enum class Func : unsigned char { Sin, Cos, Tan, Asin, Acos, Atan, Sqrt, Exp, Ln, Abs, Fix, Fup };
+enum class Op : unsigned char {
+  Neg,
+  Plus,
+  Not, // bitwise complement on 32 bits (NCT)
+  Add,
+  Sub,
+  Mul,
+  Div,
+  Mod, // a - b*trunc(a/b): the sign of the dividend (NCT)
+  And, // bitwise on 32 bits (NCT)
+  Or,
+  Xor,
+  Pow,      // a ** b (WL4)
+  FloorMod, // a - |b|*floor(a/|b|): 0 <= r < |b| (WL4 MOD)
+  Eq,       // relational inside an expression, 1 or 0 (WL4 == <> < <= > >=)
+  Ne,
+  Lt,
+  Le,
+  Gt,
+  Ge,
+  LogicalAnd, // non-zero is true, result 1 or 0 (WL4 AND OR XOR)
+  LogicalOr,
+  LogicalXor,
+};
+enum class Func : unsigned char {
+  Sin,
+  Cos,
+  Tan,
+  Asin,
+  Acos,
+  Atan,
+  Sqrt,
+  Exp,
+  Ln,
+  Abs,
+  Fix,   // toward zero (NCT)
+  Fup,   // away from zero (NCT)
+  Round, // nearest, halves away from zero (WL4)
+  Floor, // down (WL4 FIX)
+  Ceil,  // up (WL4 FUP)
+  Atan2, // ATAN(a)/(b) of WL4: args[0] = a, args[1] = b, in (-180, 180]
+};
 enum class RelOp : unsigned char { Eq, Ne, Gt, Ge, Lt, Le };
 
 struct Expr {

@@ -225,8 +225,8 @@ bool Interpreter::executeBlock(const ir::Block& block) {
   if (block.kind == ir::BlockKind::ProgramStart) return true;
   if (block.skipLevel && setup_.blockSkip.count(block.skipLevel)) return true; // nct.md §1.6
   if (block.kind == ir::BlockKind::Data) return dataInput(BlockWords{}, block);
-  if (block.stmt)
-    return fail(diag::code::NotImplemented, block.stmt->range,
+  if (!block.stmts.empty())
+    return fail(diag::code::NotImplemented, block.stmts.front().range,
                 "macro statements need the macro expansion pass, which is not implemented yet");
   BlockWords w;
   if (const ir::Word* bad = sortWords(block, profile_, w))

@@ -75,8 +75,8 @@ bool Interpreter::contourBlocks(const BlockWords& w, std::vector<ContourBlock>& 
                      diag::code::CyclePQNotFound, w.p->range,
                      fmt::format("{}: contour N{} to N{} not found in this program", name, ns, nf));
   for (const ContourBlock& c : out) {
-    if (c.block.stmt)
-      return fail(diag::code::CycleContourCommand, c.block.stmt->range,
+    if (!c.block.stmts.empty())
+      return fail(diag::code::CycleContourCommand, c.block.stmts.front().range,
                   "a macro statement inside a turning contour (cycles.md §4.7)");
     for (const ir::Word& word : c.block.words)
       if (!allowedInContour(word, profile_))

@@ -63,7 +63,7 @@ TEST(NctSpec_1_5, CommentSpansLinesAndRemovesTheBlocksInside) {
   ASSERT_TRUE(p.errors().empty()) << p.rendered();
   ASSERT_EQ(p.blocks.size(), 3u);
   EXPECT_TRUE(p.blocks[1].words.empty());
-  EXPECT_FALSE(p.blocks[1].stmt);
+  EXPECT_TRUE(p.blocks[1].stmts.empty());
   EXPECT_EQ(p.blocks[1].comments.at(0).text, "#1=2\n#1=3");
   EXPECT_EQ(p.blocks[1].lastLine, 3u);
   EXPECT_EQ(p.blocks[2].range.begin.line, 4u);
@@ -94,7 +94,7 @@ TEST(NctSpec_1_8, PercentLineAndProgramNumber) {
   Parsed p = parseNct("%O0101\nG0 X1\nM30\n%\n");
   ASSERT_TRUE(p.errors().empty()) << p.rendered();
   EXPECT_EQ(p.blocks[0].kind, ir::BlockKind::ProgramStart);
-  EXPECT_EQ(p.blocks[0].programNumber, 101);
+  EXPECT_EQ(p.blocks[0].programName, "O0101");
   EXPECT_EQ(parseNct("G0 X1\n%\nM30\n").errors(), std::vector<std::string>{"2:1 GCX007"});
 }
 
@@ -165,17 +165,17 @@ TEST(MacroSpec_1_1_L7, KeywordsGluedToOperands) {
 
 TEST(MacroSpec_3_1, OperatorPrecedenceAndFunctionOperands) {
   const ir::Block b = only(parseNct("#124=2+3*4"));
-  const ir::Expr e = b.stmt->value;
+  const ir::Expr e = b.stmts.at(0).value;
   ASSERT_EQ(e.kind, ir::ExprKind::Binary);
   EXPECT_EQ(e.op, ir::Op::Add);
   EXPECT_EQ(e.args[1].op, ir::Op::Mul);
 
-  const ir::Expr f = only(parseNct("#1=SIN30-#101")).stmt->value;
+  const ir::Expr f = only(parseNct("#1=SIN30-#101")).stmts.at(0).value;
   ASSERT_EQ(f.kind, ir::ExprKind::Binary); // [SIN30]-#101
   EXPECT_EQ(f.args[0].kind, ir::ExprKind::Call);
   EXPECT_EQ(f.args[0].args[0].number, 30);
 
-  const ir::Expr m = only(parseNct("#121=-27MOD4")).stmt->value; // unary minus binds first
+  const ir::Expr m = only(parseNct("#121=-27MOD4")).stmts.at(0).value; // unary minus binds first
   EXPECT_EQ(m.op, ir::Op::Mod);
   EXPECT_EQ(m.args[0].kind, ir::ExprKind::Unary);
 }
@@ -224,7 +224,7 @@ TEST(MacroSpec_4_1, GotoToAMissingBlock) {
 
 TEST(MacroSpec_2_9_2, MessageCommentBelongsToTheAssignment) {
   const ir::Block b = only(parseNct("#3000=1(TOOL BROKEN)"));
-  EXPECT_EQ(b.stmt->message, "TOOL BROKEN");
+  EXPECT_EQ(b.stmts.at(0).message, "TOOL BROKEN");
 }
 
 TEST(MacroSpec_9_2, PrmOnlyAsTheWholeRightSide) {
@@ -244,10 +244,10 @@ TEST(MacroSpec_5_4, ArgumentCollisionsAreForbiddenAddresses) {
 TEST(MacroSpec_6, PrintCommands) {
   EXPECT_EQ(printed("DPRNT[X#100[53]**Y#101[53]]"), "DPRNT[X#100[53]**Y#101[53]]");
   const ir::Block b = only(parseNct("DPRNT[X#100[53]]"));
-  ASSERT_EQ(b.stmt->items.size(), 2u);
-  EXPECT_EQ(b.stmt->items[1].variable, 100);
-  EXPECT_EQ(b.stmt->items[1].intDigits, 5);
-  EXPECT_EQ(b.stmt->items[1].fracDigits, 3);
+  ASSERT_EQ(b.stmts.at(0).items.size(), 2u);
+  EXPECT_EQ(b.stmts.at(0).items[1].variable, 100);
+  EXPECT_EQ(b.stmts.at(0).items[1].intDigits, 5);
+  EXPECT_EQ(b.stmts.at(0).items[1].fracDigits, 3);
   EXPECT_EQ(printed("POPEN31"), "POPEN31");
 }
 

@@ -61,8 +61,8 @@ struct Exec {
     Parsed p = parseNct(text);
     EXPECT_TRUE(p.errors().empty()) << p.rendered();
     for (const ir::Block& b : p.blocks) {
-      if (!b.stmt) continue;
-      const ir::Stmt& s = *b.stmt;
+      if (b.stmts.empty()) continue;
+      const ir::Stmt& s = b.stmts.front();
       if (s.kind == ir::StmtKind::IfThen) {
         auto c = ev.condition(*s.cond);
         if (!c) return;

@@ -44,9 +44,9 @@ struct Exec {
     Parsed p = parseNct(text);
     EXPECT_TRUE(p.errors().empty()) << p.rendered();
     for (const ir::Block& b : p.blocks) {
-      if (b.stmt) {
-        auto n = ev.variableNumber(b.stmt->target);
-        auto v = n ? ev.value(b.stmt->value) : std::nullopt;
+      if (!b.stmts.empty()) {
+        auto n = ev.variableNumber(b.stmts.front().target);
+        auto v = n ? ev.value(b.stmts.front().value) : std::nullopt;
         if (!v) return;
         store.vars[*n] = *v;
         continue;
@@ -84,8 +84,8 @@ macro::WordValue word(const std::string& setup, const std::string& text,
   Store store;
   macro::Evaluator ev(store, out ? *out : diags);
   for (const ir::Block& b : p.blocks) {
-    if (!b.stmt) return macro::wordValue(b.words.at(0), ev, opt);
-    store.vars[*ev.variableNumber(b.stmt->target)] = *ev.value(b.stmt->value);
+    if (b.stmts.empty()) return macro::wordValue(b.words.at(0), ev, opt);
+    store.vars[*ev.variableNumber(b.stmts.front().target)] = *ev.value(b.stmts.front().value);
   }
   return {};
 }
