@@ -61,3 +61,50 @@ ArgumentResult bindArguments(const ir::Block& block, const VacantValue& vacant,
 }
 
 } // namespace gcx::nct
+
+namespace gcx::nct {
+
+CallArguments bindCall(const CallSite& site) {
+  const ir::Block& b = *site.block;
+  const bool controlPL = site.kind != CallKind::ConfiguredG;
+  CallArguments out;
+  if (site.kind == CallKind::EveryBlock) {
+    int gCount = 0;
+    for (const ir::Word& w : b.words)
+      if (w.is('G') && ++gCount == 2) {
+        out.offending = &w;
+        out.code = diag::code::ForbiddenAddress;
+        out.message = "a second G code in a block under G66.1 (000:14939-14943)";
+        return out;
+      }
+  }
+  ArgumentResult bound = bindArguments(b, site.vacant, {}, controlPL);
+  if (!bound.ok()) {
+    out.offending = bound.offending;
+    out.code = bound.code;
+    out.message = std::move(bound.message);
+    return out;
+  }
+  bool taken[34] = {};
+  for (const ArgumentBinding& a : bound.bindings) {
+    out.bindings.push_back({a.variable, a.word, {}, false});
+    taken[a.variable] = true;
+  }
+  if (site.kind == CallKind::EveryBlock) { // G -> #10, L -> #12, P -> #16 (§5.6 E2)
+    out.bindings.push_back({10, nullptr, {}, true});
+    for (const ir::Word& w : b.words) {
+      if (w.is('G')) out.bindings.push_back({10, &w, {}, false});
+      if (w.is('L')) out.bindings.push_back({12, &w, {}, false});
+      if (w.is('P')) out.bindings.push_back({16, &w, {}, false});
+    }
+    return out;
+  }
+  if (!taken[10]) out.bindings.push_back({10, nullptr, site.callCode, false});
+  if (!controlPL) return out;
+  if (!taken[16] && site.programWord) out.bindings.push_back({16, site.programWord, {}, false});
+  for (const ir::Word& w : b.words)
+    if (w.is('L') && !taken[12]) out.bindings.push_back({12, &w, {}, false});
+  return out;
+}
+
+} // namespace gcx::nct

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "dialect/control_flow.h"
 #include "ir/block.h"
 
 namespace gcx::nct {
@@ -33,5 +34,11 @@ using VacantValue = std::function<bool(const ir::Word&)>;
 /// (nct-macro.md §5.4, last table).
 ArgumentResult bindArguments(const ir::Block& block, const VacantValue& vacant,
                              const UnknownValue& unknown = {}, bool controlPL = true);
+
+/// The control-flow engine's binding hook: the words of a call as bindArguments takes them,
+/// then the control values (§5.3 C3) where no word took their variable: #10 the call code,
+/// #16 P and #12 L; under G66.1 (a call by every block, §5.6 E2) #10 the block's G code or
+/// vacant, #12 its L and #16 its P, and a second G code in the block is an error.
+CallArguments bindCall(const CallSite& site);
 
 } // namespace gcx::nct

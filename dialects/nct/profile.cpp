@@ -2,6 +2,7 @@
 
 #include "diag/diagnostic.h"
 #include "dialects/nct/arguments.h"
+#include "dialects/nct/control_flow.h"
 #include "passes/cycles/pocket.h"
 
 namespace gcx::nct {
@@ -185,6 +186,7 @@ Profile build() {
     if (!r.ok()) diags.error(r.code, r.offending->range, r.message);
   };
   p.cycleMacros = {cycles::pocketCycleMacro()}; // G65 P9999 (cycles.md §5)
+  p.controlFlow = &controlFlow(p.cycleMacros);
   p.index();
   return p;
 }

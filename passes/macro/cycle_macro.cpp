@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <fmt/format.h>
 
+#include "emit/number.h"
+
 namespace gcx::macro {
 
 namespace {
@@ -12,10 +14,8 @@ bool checkArguments(const CycleMacro& cycle, const CycleMacroSite& site,
   if (!cycle.check) return true;
   CycleMacroCall call;
   call.block = &site.block;
-  call.callWord = &site.block.words.front();
-  for (const ir::Word& w : site.block.words)
-    if (w.is('G') && w.isLiteral() && w.number == 65) call.callWord = &w;
-  for (std::size_t i = 1; i < site.args.size(); ++i)
+  call.callWord = &site.callWord;
+  for (std::size_t i = 1; i < site.args.size() && i < call.args.size(); ++i)
     if (!site.args[i].vacant) call.args[i] = site.args[i].number;
   const motion::Plane plane = machine.state().plane;
   call.plane = plane == motion::Plane::ZX ? 18 : plane == motion::Plane::YZ ? 19 : 17;
@@ -34,15 +34,17 @@ bool checkCycleMacroCall(const CycleMacro& cycle, const CycleMacroSite& site,
                          const machine::Interpreter& machine, const ProgramLibrary& library,
                          diag::Engine& diags) {
   if (!checkArguments(cycle, site, machine, diags)) return false;
-  if (!library.locateByNumber(cycle.program, site.caller).empty()) return true;
-  const std::string file = fmt::format(
-      "O{:04}{}", cycle.program, std::filesystem::path(site.caller.path).extension().string());
+  const std::string unit = std::to_string(cycle.program);
+  if (!library.locate(unit, site.caller).empty()) return true;
+  const std::string file =
+      library.label(unit) + std::filesystem::path(site.caller.path).extension().string();
   std::string folders;
   for (const std::string& f : library.searchFolders(site.caller))
     folders += (folders.empty() ? "" : ", ") + (f.empty() ? std::string(".") : f);
   diags.error(cycle.missingCode, site.p.range,
-              fmt::format("G65 P{} is the {}; its macro program {} was not found in {} ({}). "
+              fmt::format("{}{} P{} is the {}; its macro program {} was not found in {} ({}). "
                           "Supply the machine builder's {} next to the program or with --lib",
+                          site.callWord.address, emit::formatNumber(site.callWord.number),
                           cycle.program, cycle.name, file, folders, cycle.spec, file));
   return false;
 }

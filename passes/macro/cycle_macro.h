@@ -1,7 +1,7 @@
-// G65 calls of system cycles written as macro programs (the profile's cycleMacros, e.g. NCT
-// G65 P9999, cycles.md §5): the bridge between the expander and the cycle's own checks.
+// Calls of system cycles written as macro programs (the profile's cycleMacros, cycles.md §5;
+// the remap table's CallCycle rows): the bridge between the expander and the cycle's own checks.
 #pragma once
-#include <array>
+#include <vector>
 
 #include "dialect/profile.h"
 #include "machine/interpreter.h"
@@ -11,9 +11,10 @@
 namespace gcx::macro {
 
 struct CycleMacroSite {
-  const ir::Block& block;            // the call as written
-  const ir::Word& p;                 // its P word
-  const std::array<Value, 34>& args; // bound #1..#33
+  const ir::Block& block;         // the call as written
+  const ir::Word& callWord;       // its call code
+  const ir::Word& p;              // its program word
+  const std::vector<Value>& args; // the bound local frame
   const LoadedProgram& caller;
 };
 

@@ -252,6 +252,11 @@ std::optional<Value> Evaluator::binary(const ir::Expr& e) {
     return Value::of(e.op == ir::Op::Div ? a / b : a - b * std::trunc(a / b));
   case ir::Op::And:
   case ir::Op::Or:
+    if (choices_.logicalAndOr) { // WL4: true is any non-zero value, the result 1 or 0
+      const bool r = e.op == ir::Op::And ? a != 0 && b != 0 : a != 0 || b != 0;
+      return Value::of(r ? 1 : 0);
+    }
+    [[fallthrough]];
   case ir::Op::Xor: {
     if (!bitRange(a, e.args[0]) || !bitRange(b, e.args[1])) return std::nullopt;
     return Value::of(bitwise(e.op, a, b));
@@ -309,8 +314,8 @@ std::optional<Value> Evaluator::call(const ir::Expr& e) {
     return Value::of(std::log(x));
   case ir::Func::Abs:
     return Value::of(std::fabs(x));
-  case ir::Func::Fix:
-    return Value::of(std::trunc(x));
+  case ir::Func::Fix: // toward zero (NCT) or down (WL4)
+    return Value::of(choices_.fixFloors ? std::floor(x) : std::trunc(x));
   case ir::Func::Fup: // away from zero; a whole number stays (§12 Q2)
     return Value::of(x >= 0 ? std::ceil(x) : std::floor(x));
   case ir::Func::Round:

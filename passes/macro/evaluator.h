@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "diag/diagnostic.h"
+#include "dialect/control_flow.h"
 #include "ir/expr.h"
 #include "passes/macro/value.h"
 
@@ -41,6 +42,8 @@ public:
 
   diag::Engine& diags() { return diags_; }
   void setVacantOrder(VacantOrder o) { vacantOrder_ = o; }
+  /// The dialect's choices: AND/OR bitwise or logical, FIX truncating or flooring.
+  void setChoices(const ExpressionChoices& c) { choices_ = c; }
 
 private:
   std::optional<Value> compute(const ir::Expr& e);
@@ -56,6 +59,7 @@ private:
   VariableAccess& vars_;
   diag::Engine& diags_;
   VacantOrder vacantOrder_ = VacantOrder::Nct;
+  ExpressionChoices choices_;
 };
 
 } // namespace gcx::macro

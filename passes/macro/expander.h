@@ -1,35 +1,44 @@
-// The macro expansion pass (nct-macro.md §2-§6): walks NCT control flow and calls while it
-// drives the machine model, so system variables read the true state, and hands flat blocks
-// (all word values literal) with their provenance to the interpreter.
+// The control-flow engine (docs/control-flow.md): walks a program's jumps, loops, calls, modal
+// calls and repeat counts while it drives the machine model, so system variables read the true
+// state, and hands flat blocks (all word values literal) with their provenance to the
+// interpreter. What each code does, how variables are laid out, how a call binds its arguments
+// and how a program is found come from the dialect's ControlFlow (dialect/control_flow.h).
+// The methods live in files of one job each: expander.cpp (the run), nc_blocks.cpp (flat
+// blocks and the remap table), calls.cpp, modal_calls.cpp, configured_calls.cpp, loops.cpp,
+// jumps.cpp, variables.cpp and print.cpp.
 #pragma once
-#include <array>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
+#include "dialect/control_flow.h"
 #include "machine/interpreter.h"
 #include "passes/macro/evaluator.h"
+#include "passes/macro/frames.h"
 #include "passes/macro/program_library.h"
-#include "passes/macro/system_variables.h"
+#include "passes/macro/system_variable_store.h"
 
 namespace gcx::macro {
 
 /// Configurable limits: a runaway loop or recursion stops with a located error naming it.
 struct Limits {
-  std::uint64_t maxJumps = 1'500'000;   // backward jumps (END, GOTO, M99, L repeats) per run
+  std::uint64_t maxJumps = 1'500'000;   // backward jumps (loop ends, jumps, returns, repeats)
   std::uint64_t maxBlocks = 20'000'000; // blocks executed per run
-  int maxDepth = 16;                    // nested M98/G65 levels (nct-macro.md V5)
+  int maxDepth = 16;                    // nested call levels (NCT: nct-macro.md V5)
 };
 
 class Expander : public VariableAccess {
 public:
-  Expander(ProgramLibrary& library, machine::Interpreter& machine, SystemVariables& system,
-           diag::Engine& diags, Limits limits = {});
+  /// The system variables come from the dialect (ControlFlow::systemVariables).
+  Expander(ProgramLibrary& library, machine::Interpreter& machine, diag::Engine& diags,
+           Limits limits = {});
+  ~Expander() override;
 
-  /// Runs the main program to its end (M2/M30, end of file). False after an error.
+  /// Runs the main program to its end (program end code, end of file). False after an error.
   bool run(const LoadedProgram& main);
   /// DPRNT/BPRNT output goes here (standard output by default in the CLI).
   void setPrintOutput(std::ostream* out) { print_ = out; }
@@ -48,84 +57,80 @@ public:
   std::optional<int> axisNumber(char letter, const SourceRange& where) override;
 
 private:
-  struct Loop {
-    std::size_t head;        // the WHILE/DO block
-    std::uint64_t iteration; // 1 on entry
-  };
-  struct Frame {
-    const LoadedProgram* program = nullptr;
-    std::size_t pc = 0;
-    int level = 0;              // local-variable level (G65 opens one, M98 does not)
-    std::int64_t remaining = 0; // runs left after this one (L)
-    std::size_t callBlock = 0;  // index of the calling block in the caller
-    SourceLoc callSite;
-    std::string what;             // "M98 P11", "G65 P9010"
-    std::array<Value, 34> args{}; // G65: the frame each run starts from
-    std::vector<Loop> loops;
-    bool macro = false;
-    std::size_t modalVisible = static_cast<std::size_t>(-1); // modal calls this frame sees
-    bool configured = false; // started by a code configured as a call (§5.8)
-  };
-  /// A G, M or letter code the parameters turn into a call (nct-macro.md §5.8).
-  struct ConfiguredCall {
-    enum Kind { MacroG, ModalG, MacroM, SubprogramM, SubprogramLetter } kind;
-    std::int64_t program;
-    const ir::Word* word;
-    int valueVariable = 0; // #195-#199 for A B C S T
-  };
-  std::optional<ConfiguredCall> configuredCall(const ir::Block& flat);
-  bool runConfiguredCall(Frame& f, const ir::Block& b, const ir::Block& flat,
-                         const ConfiguredCall& c);
-  bool insideConfiguredCall() const;
-  /// A G66 / G66.1 registration (nct-macro.md §5.5-§5.7).
-  struct ModalCall {
-    const LoadedProgram* program = nullptr;
-    std::array<Value, 34> args{};
-    std::int64_t times = 1;
-    bool everyBlock = false; // G66.1
-    std::string what;
+  /// A remapped code found in a flat block, with the words its row names.
+  struct CodeMatch {
+    const Remap* row = nullptr;
+    const ir::Word* code = nullptr;
+    const ir::Word* program = nullptr; // the row's program word
+    const ir::Word* repeat = nullptr;  // the row's repeat word
+    const ir::Word* file = nullptr;    // a `<file>` word, when the row takes one
   };
 
+  // expander.cpp: the run
   bool step();
+  bool endOfProgram(const Frame& f);
+  motion::Provenance provenance(const ir::Block& b) const;
+  bool fail(const char* code, const SourceRange& where, std::string message);
+  ParameterLookup parameters() const;
+  const ControlFlow& flow() const { return flow_; }
+
+  // loops.cpp, jumps.cpp: statements that move the program counter
   bool statement(Frame& f, const ir::Block& b);
+  bool loopHead(Frame& f, const ir::Stmt& s);
+  bool loopBack(Frame& f, std::size_t head, const SourceRange& where);
+  bool jumpTo(Frame& f, const ir::Expr& label, const SourceRange& where);
+
+  // variables.cpp
   bool assign(const ir::Stmt& s);
   bool write(int number, const Value& v, const ir::Stmt& s);
-  bool jumpTo(Frame& f, const ir::Expr& label, const SourceRange& where);
-  bool loopBack(Frame& f, std::size_t head, const SourceRange& where);
+  bool message(const ir::Stmt& s, const MessageRule& rule, int variable, const Value& v);
+  Value* locals() { return frames_.top(stack_.back().level); }
+
+  // print.cpp
+  bool print(const ir::Stmt& s);
+
+  // nc_blocks.cpp: flat blocks and the remap table
   bool ncBlock(Frame& f, const ir::Block& b);
   /// Every word of b resolved to a literal (or dropped when vacant); false after reporting.
   bool flatten(const ir::Block& b, ir::Block& flat);
   /// The interpreter's ContourSource: blocks ns..nf of the running program, flat.
   bool contour(std::int64_t ns, std::int64_t nf, std::vector<machine::ContourBlock>& out);
-  bool callSubprogram(Frame& f, const ir::Block& b, const ir::Word* p, const ir::Word* file,
-                      std::int64_t times);
-  bool callMacro(Frame& f, const ir::Block& b, const ir::Word* p, const ir::Word* file,
-                 std::int64_t times);
-  /// Binds a call block's arguments (§5.4); the control values #10/#12/#16 where not taken.
-  bool bindCall(const ir::Block& b, double callCode, const ir::Word* p, std::array<Value, 34>& args,
-                bool controlPL = true);
-  bool pushMacro(Frame& f, const LoadedProgram* program, const std::array<Value, 34>& args,
+  CodeMatch match(const ir::Word& w, const ir::Block& flat) const;
+  /// Runs the block's other words first (a call's NC part); false when the run stops.
+  bool runNcPart(const ir::Block& b, ir::Block nc, bool& stopped);
+  bool execute(Frame& f, const ir::Block& b, const ir::Block& flat);
+
+  // calls.cpp: calls, returns and repeat counts
+  bool call(Frame& f, const ir::Block& b, const CodeMatch& m);
+  /// Binds a call's arguments into a new local frame; false after reporting.
+  bool bind(const CallSite& site, std::vector<Value>& args);
+  bool pushFrame(Frame& f, const LoadedProgram* program, LocalFrame frame, std::vector<Value> args,
                  std::int64_t times, std::string what, const SourceRange& site,
                  std::size_t modalVisible);
-  bool modalBlock(Frame& f, const ir::Block& b, const ir::Block& flat, const ir::Word& code);
+  bool returnFromCall(Frame& f, const ir::Block& flat, const CodeMatch& m);
+  std::string describe(const CodeMatch& m, const std::string& unit) const;
+  bool tooDeep(const SourceRange& where);
+
+  // modal_calls.cpp
+  bool modalBlock(Frame& f, const ir::Block& b, const ir::Block& flat, const CodeMatch& m);
+  bool everyBlockCall(Frame& f, const ir::Block& b, const ir::Block& flat, const ModalCall& m);
   const ModalCall* visibleModalCall() const;
-  bool returnFromCall(Frame& f, const ir::Block& b);
-  bool endOfProgram(const Frame& f);
-  bool print(const ir::Stmt& s);
-  bool message(const ir::Stmt& s, int variable, const Value& v);
-  motion::Provenance provenance(const ir::Block& b) const;
-  bool fail(const char* code, const SourceRange& where, std::string message);
-  std::array<Value, 34>& locals() { return locals_[stack_.back().level]; }
+
+  // configured_calls.cpp
+  bool runConfiguredCall(Frame& f, const ir::Block& b, const ir::Block& flat,
+                         const ConfiguredCall& c);
+  bool insideConfiguredCall() const;
 
   ProgramLibrary& library_;
   machine::Interpreter& machine_;
-  SystemVariables& system_;
+  const ControlFlow& flow_;
+  std::unique_ptr<SystemVariableStore> system_;
   diag::Engine& diags_;
   Limits limits_;
   Evaluator eval_;
   std::vector<Frame> stack_;
   std::vector<ModalCall> modalCalls_;
-  std::vector<std::array<Value, 34>> locals_;
+  LocalFrames frames_;
   std::map<int, Value> commons_;
   std::uint64_t jumps_ = 0, blocks_ = 0;
   std::ostream* print_ = nullptr;
@@ -134,8 +139,9 @@ private:
   bool done_ = false;
 };
 
-/// True if a program file may need the expansion pass (macro statements, calls, variables);
-/// plain files are run streaming instead. A cheap byte scan: false positives only cost memory.
-bool mayNeedExpansion(const std::string& path);
+/// True if a program file may need the expansion pass (the dialect's expansion markers, or a
+/// variable or expression); plain files are run streaming instead. A cheap byte scan: false
+/// positives only cost memory.
+bool mayNeedExpansion(const std::string& path, const Profile& profile);
 
 } // namespace gcx::macro

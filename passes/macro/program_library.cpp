@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "diag/codes.h"
+#include "dialect/control_flow.h"
 #include "passes/check/static_checks.h"
 
 namespace gcx::macro {
@@ -82,8 +83,8 @@ std::vector<std::string> ProgramLibrary::searchFolders(const LoadedProgram& call
   return dirs;
 }
 
-std::string ProgramLibrary::locate(const std::vector<std::string>& candidates,
-                                   const LoadedProgram& caller) const {
+std::string ProgramLibrary::locateFile(const std::vector<std::string>& candidates,
+                                       const LoadedProgram& caller) const {
   for (const fs::path dir : searchFolders(caller)) {
     for (const std::string& name : candidates) {
       const fs::path direct = dir / name;
@@ -110,7 +111,7 @@ std::string ProgramLibrary::locate(const std::vector<std::string>& candidates,
 const LoadedProgram* ProgramLibrary::findFile(const std::vector<std::string>& candidates,
                                               const LoadedProgram& caller, const SourceRange& where,
                                               const std::string& what) {
-  if (std::string path = locate(candidates, caller); !path.empty()) {
+  if (std::string path = locateFile(candidates, caller); !path.empty()) {
     if (!insideRoots(path)) {
       diags_.error(diag::code::PathOutsideFolders, where,
                    fmt::format("program {} lies outside the program's folder and the --lib "
@@ -138,23 +139,26 @@ bool ProgramLibrary::insideRoots(const std::string& path) const {
   return std::any_of(libraryDirs_.begin(), libraryDirs_.end(), within);
 }
 
-std::vector<std::string> ProgramLibrary::numberNames(std::int64_t number,
-                                                     const LoadedProgram& caller) const {
-  const std::string ext = fs::path(caller.path).extension().string();
-  std::vector<std::string> names;
-  if (number >= 0 && number <= 9999) names.push_back(fmt::format("O{:04}{}", number, ext));
-  if (number >= 0 && number <= 99999999) names.push_back(fmt::format("O{:08}{}", number, ext));
-  return names;
+std::vector<std::string> ProgramLibrary::unitFiles(const std::string& unit,
+                                                   const LoadedProgram& caller) const {
+  const ControlFlow* flow = dialect_.profile().controlFlow;
+  if (!flow || !flow->programFiles) return {};
+  return flow->programFiles(unit, fs::path(caller.path).extension().string());
 }
 
-std::string ProgramLibrary::locateByNumber(std::int64_t number, const LoadedProgram& caller) const {
-  return locate(numberNames(number, caller), caller);
+std::string ProgramLibrary::label(const std::string& unit) const {
+  const ControlFlow* flow = dialect_.profile().controlFlow;
+  return flow && flow->programLabel ? flow->programLabel(unit) : unit;
 }
 
-const LoadedProgram* ProgramLibrary::byNumber(std::int64_t number, const LoadedProgram& caller,
-                                              const SourceRange& where) {
+std::string ProgramLibrary::locate(const std::string& unit, const LoadedProgram& caller) const {
+  return locateFile(unitFiles(unit, caller), caller);
+}
+
+const LoadedProgram* ProgramLibrary::byUnit(const std::string& unit, const LoadedProgram& caller,
+                                            const SourceRange& where) {
   const std::string ext = fs::path(caller.path).extension().string();
-  return findFile(numberNames(number, caller), caller, where, fmt::format("O{:04}{}", number, ext));
+  return findFile(unitFiles(unit, caller), caller, where, label(unit) + ext);
 }
 
 const LoadedProgram* ProgramLibrary::byName(const std::string& name, const LoadedProgram& caller,

@@ -1,6 +1,6 @@
 // The program files a run needs, loaded whole (jumps and calls need random access): the main
-// program, subprograms and macros found by number or by file name (nct.md §5.1,
-// nct-macro.md §5.1), each parsed and statically checked once.
+// program, and the programs it calls, found by their unit name through the dialect's
+// ControlFlow::programFiles or by file name, each parsed and statically checked once.
 #pragma once
 #include <memory>
 #include <string>
@@ -34,21 +34,26 @@ public:
 
   /// Loads a program file; null after reporting errors (I/O, syntax, static checks).
   const LoadedProgram* load(const std::string& path);
-  /// `M98 P<n>` / `G65 P<n>`: O%04d then O%08d with the caller's extension, in the caller's
-  /// folder, then in the library folders. Null after reporting NCTX07 at `where`.
-  const LoadedProgram* byNumber(std::int64_t number, const LoadedProgram& caller,
-                                const SourceRange& where);
-  /// The file `byNumber` would load, or empty; nothing is reported.
-  std::string locateByNumber(std::int64_t number, const LoadedProgram& caller) const;
+  /// Program `unit` (NCT "12" from a P12 call word): the dialect's file names for it with the
+  /// caller's extension, in the caller's folder, then in the library folders. Null after
+  /// reporting NCTX07 at `where`.
+  const LoadedProgram* byUnit(const std::string& unit, const LoadedProgram& caller,
+                              const SourceRange& where);
+  /// The file `byUnit` would load, or empty; nothing is reported.
+  std::string locate(const std::string& unit, const LoadedProgram& caller) const;
+  /// How messages name program `unit` (NCT "O0012").
+  std::string label(const std::string& unit) const;
   /// The folders a call from `caller` searches, in order.
   std::vector<std::string> searchFolders(const LoadedProgram& caller) const;
-  /// `M98 <name>`: relative to the caller's folder (`\` separators, `..\`), then the library.
+  /// A `<name>` call word: relative to the caller's folder (`\` separators, `..\`), then the
+  /// library.
   const LoadedProgram* byName(const std::string& name, const LoadedProgram& caller,
                               const SourceRange& where);
 
 private:
-  std::vector<std::string> numberNames(std::int64_t number, const LoadedProgram& caller) const;
-  std::string locate(const std::vector<std::string>& candidates, const LoadedProgram& caller) const;
+  std::vector<std::string> unitFiles(const std::string& unit, const LoadedProgram& caller) const;
+  std::string locateFile(const std::vector<std::string>& candidates,
+                         const LoadedProgram& caller) const;
   const LoadedProgram* findFile(const std::vector<std::string>& candidates,
                                 const LoadedProgram& caller, const SourceRange& where,
                                 const std::string& what);

@@ -49,7 +49,8 @@ struct WordOptions {
   /// Coordinate resolution (profile setting nct.coord_resolution): 1e-6 mm and degree,
   /// 1e-7 inch (§2.6, §12 Q18).
   double resolution = 1e-6;
-  /// P is a program number (M98, G65, G66) or sequence number (M99 P), S a configured call.
+  /// P is a program or sequence number of a call or return (the remap row says so), S a
+  /// configured call.
   bool callNumber = false;
 };
 

@@ -148,8 +148,7 @@ bool expandProgram(Session& s, const CommonOptions& opt, const machine::Setup& s
   machine::Interpreter interp(s.dialect().profile(), setup, sink, s.diags());
   framed.bind(interp);
   limitMachine(interp, opt, programSize(s));
-  macro::SystemVariables system(interp, s.diags());
-  macro::Expander expander(library, interp, system, s.diags(), expansionLimits(opt));
+  macro::Expander expander(library, interp, s.diags(), expansionLimits(opt));
   expander.setPrintOutput(&printOut);
   if (opt.fanucVacantOrder) expander.setVacantOrder(macro::VacantOrder::Fanuc);
   if (!expander.run(*main)) return false;
@@ -160,7 +159,8 @@ bool expandProgram(Session& s, const CommonOptions& opt, const machine::Setup& s
 
 bool executeProgram(Session& s, const CommonOptions& opt, const machine::Setup& setup,
                     motion::Sink& out, std::ostream& printOut, Frame frame) {
-  if (macro::mayNeedExpansion(s.path())) return expandProgram(s, opt, setup, out, printOut, frame);
+  if (macro::mayNeedExpansion(s.path(), s.dialect().profile()))
+    return expandProgram(s, opt, setup, out, printOut, frame);
   check::StaticChecker checker(s.dialect().profile(), s.diags());
   FramedSink framed(out, frame);
   motion::Sink& sink = framed.sink();

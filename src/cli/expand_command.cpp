@@ -40,8 +40,7 @@ int expandToNct(Session& s, const ExpandOptions& opt, const machine::Setup& setu
   std::error_code sizeError;
   const std::uintmax_t programBytes = std::filesystem::file_size(s.path(), sizeError);
   limitMachine(interp, opt.common, sizeError ? 0 : programBytes);
-  macro::SystemVariables system(interp, s.diags());
-  macro::Expander expander(library, interp, system, s.diags(), expansionLimits(opt.common));
+  macro::Expander expander(library, interp, s.diags(), expansionLimits(opt.common));
   expander.setPrintOutput(&print.stream());
   if (opt.common.fanucVacantOrder) expander.setVacantOrder(macro::VacantOrder::Fanuc);
   cycles::KeptContours contours(main->blocks, s.dialect().profile());

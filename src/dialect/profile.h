@@ -18,6 +18,7 @@ struct Word;
 namespace diag {
 class Engine;
 }
+struct ControlFlow;
 
 struct AddressSpec {
   std::string address;      // "X", ",C", "AX"
@@ -137,6 +138,7 @@ struct CycleChoices {
 
 struct Profile {
   std::string name;
+  const ControlFlow* controlFlow = nullptr; // calls, variables, remaps (control_flow.h)
   CycleChoices cycleChoices;
   std::vector<AddressSpec> addresses;
   std::vector<GCodeSpec> gcodes;

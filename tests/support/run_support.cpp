@@ -176,8 +176,7 @@ MacroRun runMacroUnder(const std::map<std::string, std::string>& files, const st
   std::ostringstream printed;
   if (const macro::LoadedProgram* prog = library.load((dir / main).string())) {
     machine::Interpreter interp(nct::profile(), setup, sink, diags);
-    macro::SystemVariables system(interp, diags);
-    macro::Expander expander(library, interp, system, diags, limits);
+    macro::Expander expander(library, interp, diags, limits);
     expander.setPrintOutput(&printed);
     expander.run(*prog);
     for (int n : watch)

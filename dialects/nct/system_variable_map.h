@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-namespace gcx::macro::sysvar {
+namespace gcx::nct::sysvar {
 
 enum class Kind : unsigned char {
   Vacant,              // #0, #3100, #_EMPTY (§2.9.1)
@@ -76,4 +76,4 @@ std::optional<Ref> decodeNamed(const std::string& name, std::optional<int> index
 /// symbols without a number (#_M_SBK, #_CNTBS) and for unknown ones.
 std::optional<int> numberOf(const std::string& name, std::optional<int> index);
 
-} // namespace gcx::macro::sysvar
+} // namespace gcx::nct::sysvar

@@ -1,4 +1,6 @@
-#include "passes/macro/system_variables.h"
+#include "dialects/nct/system_variables.h"
+
+#include <filesystem>
 
 #include <cctype>
 #include <cmath>
@@ -8,7 +10,7 @@
 #include "diag/codes.h"
 #include "emit/number.h"
 
-namespace gcx::macro {
+namespace gcx::nct {
 
 using emit::formatNumber;
 using sysvar::Kind;
@@ -47,6 +49,13 @@ std::string workOffsetKey(int sub) {
 
 SystemVariables::SystemVariables(machine::Interpreter& machine, diag::Engine& diags)
     : machine_(machine), diags_(diags) {}
+
+void SystemVariables::startMain(const std::string& path) {
+  const std::string stem = std::filesystem::path(path).stem().string();
+  if (stem.size() > 1 && (stem[0] == 'O' || stem[0] == 'o') &&
+      stem.find_first_not_of("0123456789", 1) == std::string::npos && stem.size() <= 9)
+    setMainProgramNumber(std::stoi(stem.substr(1)));
+}
 
 bool SystemVariables::fail(const char* code, const SourceRange& where, std::string message) {
   diags_.error(code, where, std::move(message));
@@ -408,4 +417,4 @@ bool SystemVariables::writeToolOffset(const Ref& r, double v) {
   }
 }
 
-} // namespace gcx::macro
+} // namespace gcx::nct

@@ -8,7 +8,7 @@
 #include "diag/codes.h"
 #include "dialects/nct/profile.h"
 #include "machine/interpreter.h"
-#include "passes/macro/system_variables.h"
+#include "dialects/nct/system_variables.h"
 #include "support/test_support.h"
 
 namespace gcx::test {
@@ -27,7 +27,7 @@ struct Rig {
   diag::Engine diags{1000};
   Events sink;
   machine::Interpreter machine;
-  macro::SystemVariables vars;
+  nct::SystemVariables vars;
   std::uint32_t nextLine = 1;
 
   explicit Rig(const machine::Setup& setup = {})
@@ -91,11 +91,11 @@ TEST(SystemVariables, ConstantsInShortAndSymbolicForms) {
   EXPECT_EQ(r.get(3102), std::numbers::e);
   EXPECT_EQ(r.get("e"), std::numbers::e); // symbols are case-insensitive (§1.1 L2)
   EXPECT_TRUE(r.codes().empty());
-  EXPECT_TRUE(macro::SystemVariables::isSystem(0));
-  EXPECT_TRUE(macro::SystemVariables::isSystem(1000));
-  EXPECT_TRUE(macro::SystemVariables::isSystem(3101));
-  EXPECT_FALSE(macro::SystemVariables::isSystem(999));
-  EXPECT_FALSE(macro::SystemVariables::isSystem(33));
+  EXPECT_TRUE(nct::SystemVariables::isSystem(0));
+  EXPECT_TRUE(nct::SystemVariables::isSystem(1000));
+  EXPECT_TRUE(nct::SystemVariables::isSystem(3101));
+  EXPECT_FALSE(nct::SystemVariables::isSystem(999));
+  EXPECT_FALSE(nct::SystemVariables::isSystem(33));
 }
 
 TEST(SystemVariables, PlcInputsAreZeroWithOneWarningPerVariable) {
@@ -562,19 +562,18 @@ TEST(SystemVariables, ListedButNotModelledIsGCX030) {
 }
 
 TEST(SystemVariables, NumberOfSymbols) {
-  using S = macro::SystemVariables;
-  EXPECT_EQ(S::numberOf("ALM", {}), 3000);
-  EXPECT_EQ(S::numberOf("msgbox", {}), 3107);
-  EXPECT_EQ(S::numberOf("ABSIO", 3), 100003);
-  EXPECT_EQ(S::numberOf("WZP2", 1), 101051);
-  EXPECT_EQ(S::numberOf("WRG55", 2), 120012);
-  EXPECT_EQ(S::numberOf("WRP1", 1), 120061);
-  EXPECT_EQ(S::numberOf("FOFS8", 50), 117450);
-  EXPECT_EQ(S::numberOf("ACTWZP", {}), 4330);
-  EXPECT_EQ(S::numberOf("INTT", {}), 4520);
-  EXPECT_EQ(S::numberOf("UO", 31), 1131);
-  EXPECT_EQ(S::numberOf("M_SBK", {}), std::nullopt);
-  EXPECT_EQ(S::numberOf("NOPE", {}), std::nullopt);
+  EXPECT_EQ(nct::sysvar::numberOf("ALM", {}), 3000);
+  EXPECT_EQ(nct::sysvar::numberOf("msgbox", {}), 3107);
+  EXPECT_EQ(nct::sysvar::numberOf("ABSIO", 3), 100003);
+  EXPECT_EQ(nct::sysvar::numberOf("WZP2", 1), 101051);
+  EXPECT_EQ(nct::sysvar::numberOf("WRG55", 2), 120012);
+  EXPECT_EQ(nct::sysvar::numberOf("WRP1", 1), 120061);
+  EXPECT_EQ(nct::sysvar::numberOf("FOFS8", 50), 117450);
+  EXPECT_EQ(nct::sysvar::numberOf("ACTWZP", {}), 4330);
+  EXPECT_EQ(nct::sysvar::numberOf("INTT", {}), 4520);
+  EXPECT_EQ(nct::sysvar::numberOf("UO", 31), 1131);
+  EXPECT_EQ(nct::sysvar::numberOf("M_SBK", {}), std::nullopt);
+  EXPECT_EQ(nct::sysvar::numberOf("NOPE", {}), std::nullopt);
 }
 
 } // namespace

@@ -18,12 +18,14 @@
 
 #include "diag/diagnostic.h"
 #include "machine/interpreter.h"
-#include "passes/macro/system_variable_map.h"
-#include "passes/macro/value.h"
+#include "dialects/nct/system_variable_map.h"
+#include "passes/macro/system_variable_store.h"
 
-namespace gcx::macro {
+namespace gcx::nct {
 
-class SystemVariables {
+using macro::Value;
+
+class SystemVariables : public macro::SystemVariableStore {
 public:
   SystemVariables(machine::Interpreter& machine, diag::Engine& diags);
 
@@ -33,24 +35,26 @@ public:
   /// The number a symbol stands for (#_ABSIO[3] -> 100003, #_ALM -> 3000), nullopt for the
   /// symbols without one (#_M_SBK, #_CNTBS) and unknown ones: lets the expander route
   /// #_ALM / #_MSG / #_MSGSTP / #_MSGBOX writes to its message handling.
-  static std::optional<int> numberOf(const std::string& name, std::optional<int> index) {
+  std::optional<int> numberOf(const std::string& name, std::optional<int> index) const override {
     return sysvar::numberOf(name, index);
   }
 
   /// Reads #n; nullopt after reporting NCTX01 (not listed, write-only) or GCX030 (listed,
   /// not modelled).
-  std::optional<Value> read(int number, const SourceRange& where);
+  std::optional<Value> read(int number, const SourceRange& where) override;
   /// Writes #n: 2161 read-only, NCTX05 vacant, 2092 bit value outside 0..1 (§2.7 A2-A5),
   /// NCTX01 not listed, GCX030 listed but not modelled. False after reporting.
-  bool write(int number, const Value& v, const SourceRange& where);
+  bool write(int number, const Value& v, const SourceRange& where) override;
   /// #_NAME / #_NAME[index]; name without "#_", any case.
   std::optional<Value> readNamed(const std::string& name, std::optional<int> index,
-                                 const SourceRange& where);
+                                 const SourceRange& where) override;
   bool writeNamed(const std::string& name, std::optional<int> index, const Value& v,
-                  const SourceRange& where);
+                  const SourceRange& where) override;
 
   /// #4000 #_MAINO: the running main program's number (0 if its name is not O + digits).
   void setMainProgramNumber(int number) { mainProgram_ = number; }
+  /// Sets #4000 from the main program's file name: O + digits (nct-macro.md §2.9.3).
+  void startMain(const std::string& path) override;
 
 private:
   std::optional<Value> read(const sysvar::Ref& r, const std::string& label,
@@ -88,4 +92,4 @@ private:
   std::set<sysvar::Ref> warned_;
 };
 
-} // namespace gcx::macro
+} // namespace gcx::nct

@@ -1,10 +1,10 @@
-#include "passes/macro/system_variable_map.h"
+#include "dialects/nct/system_variable_map.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cstring>
 
-namespace gcx::macro::sysvar {
+namespace gcx::nct::sysvar {
 
 namespace {
 
@@ -214,4 +214,4 @@ std::optional<Ref> decodeNamed(const std::string& rawName, std::optional<int> in
   return std::nullopt;
 }
 
-} // namespace gcx::macro::sysvar
+} // namespace gcx::nct::sysvar

@@ -1,0 +1,76 @@
+// Modal calls (NCT: nct-macro.md §5.5-§5.7): a registration calls its program after every
+// motion block or after every NC block, the most recent visible one wins, and a cancel removes
+// the most recent.
+#include <algorithm>
+#include <fmt/format.h>
+
+#include "diag/codes.h"
+#include "emit/number.h"
+#include "passes/macro/expander.h"
+
+namespace gcx::macro {
+
+const ModalCall* Expander::visibleModalCall() const {
+  // in a macro started by modal entry j only the entries before j are visible (§5.5 D5)
+  const std::size_t visible = std::min(stack_.back().modalVisible, modalCalls_.size());
+  return visible ? &modalCalls_[visible - 1] : nullptr;
+}
+
+bool Expander::modalBlock(Frame& f, const ir::Block& b, const ir::Block& flat, const CodeMatch& m) {
+  const Remap& r = *m.row;
+  (void)flat;
+  if (r.action == FlowAction::ModalCancel) {
+    if (!modalCalls_.empty()) modalCalls_.pop_back();
+    machine_.setModalCode(r.modalGroup,
+                          modalCalls_.empty() ? r.modalCode10 : modalCalls_.back().code10);
+    ++f.pc;
+    return true;
+  }
+  const bool everyBlock = r.action == FlowAction::ModalCallEveryBlock;
+  const ir::Word* p = m.program;
+  if (!p)
+    return fail(diag::code::MissingData, m.code->range,
+                fmt::format("{}{} needs {} (program number)", m.code->address,
+                            emit::formatNumber(m.code->number), r.programWord));
+  ModalCall call;
+  call.everyBlock = everyBlock;
+  call.code10 = r.modalCode10;
+  call.frame = r.frame;
+  const std::string unit = std::to_string(static_cast<std::int64_t>(p->number));
+  call.program = library_.byUnit(unit, *f.program, p->range);
+  if (!call.program) return false;
+  call.times = m.repeat ? static_cast<std::int64_t>(m.repeat->number) : 1;
+  CallSite site;
+  site.block = &b;
+  site.callCode = m.code->number;
+  site.programWord = p;
+  if (!bind(site, call.args)) return false;
+  call.what = describe(m, unit);
+  modalCalls_.push_back(call);
+  machine_.setModalCode(r.modalGroup, r.modalCode10);
+  if (!everyBlock) { // a registration calls nothing and moves nothing in its own block (D1)
+    ++f.pc;
+    return true;
+  }
+  // an every-block registration also calls at once from its own block (E1); the macro
+  // returns to the next block
+  if (call.times < 1) {
+    ++f.pc;
+    return true;
+  }
+  return pushFrame(f, call.program, call.frame, call.args, call.times, call.what, b.range,
+                   modalCalls_.size() - 1);
+}
+
+bool Expander::everyBlockCall(Frame& f, const ir::Block& b, const ir::Block& flat,
+                              const ModalCall& m) {
+  CallSite site;
+  site.block = &flat;
+  site.kind = CallKind::EveryBlock;
+  std::vector<Value> args;
+  if (!bind(site, args)) return false;
+  const std::size_t index = static_cast<std::size_t>(&m - modalCalls_.data());
+  return pushFrame(f, m.program, m.frame, std::move(args), m.times, m.what, b.range, index);
+}
+
+} // namespace gcx::macro

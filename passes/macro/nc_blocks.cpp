@@ -1,0 +1,219 @@
+// NC blocks: every word resolved to a literal, then the dialect's remap table decides whether
+// the block calls, returns, registers a modal call or simply runs on the machine.
+#include <cmath>
+#include <fmt/format.h>
+
+#include "diag/codes.h"
+#include "emit/number.h"
+#include "passes/macro/expander.h"
+#include "passes/macro/word_values.h"
+
+namespace gcx::macro {
+
+namespace {
+
+// A motion block for a modal call (nct-macro.md §5.5 D3): an NC block with an axis word.
+bool movesAxes(const ir::Block& b) {
+  for (const ir::Word& w : b.words)
+    if (w.address.size() == 1 &&
+        std::string_view("XYZUVWABC").find(w.address[0]) != std::string_view::npos)
+      return true;
+  return false;
+}
+
+const ir::Word* wordOf(const ir::Block& b, char letter) {
+  return letter ? b.find(letter) : nullptr;
+}
+
+bool isModal(FlowAction a) {
+  return a == FlowAction::ModalCall || a == FlowAction::ModalCallEveryBlock ||
+         a == FlowAction::ModalCancel;
+}
+
+} // namespace
+
+Expander::CodeMatch Expander::match(const ir::Word& w, const ir::Block& flat) const {
+  CodeMatch m;
+  if (w.kind != ir::ValueKind::Number) return m;
+  const Remap* row = flow_.remaps.find(w.address, w.number);
+  if (!row) return m;
+  const ir::Word* program = wordOf(flat, row->programWord);
+  if (program) // a row for this program only (a system cycle) comes first
+    if (const Remap* only = flow_.remaps.find(w.address, w.number, program->number)) row = only;
+  m.row = row;
+  m.code = &w;
+  m.program = program;
+  m.repeat = wordOf(flat, row->repeatWord);
+  if (row->fileWord)
+    for (const ir::Word& x : flat.words)
+      if (x.kind == ir::ValueKind::Path) m.file = &x;
+  if (row->onlyIfProgramExists) { // a user program overrides the built-in only if it exists
+    const std::string unit = row->program == ProgramSource::Word
+                                 ? (program ? emit::formatNumber(program->number) : "")
+                                 : programFromDigits(*row, emit::formatNumber(w.number)).unit;
+    if (unit.empty() || library_.locate(unit, *stack_.back().program).empty()) return {};
+  }
+  return m;
+}
+
+bool Expander::flatten(const ir::Block& b, ir::Block& flat) {
+  // resolve every value; vacant bare references drop their word (§2.5 rule 4)
+  flat = b;
+  flat.words.clear();
+  bool call = false; // P is a program or sequence number in a call or return
+  for (const ir::Word& w : b.words)
+    if (w.isLiteral())
+      if (const Remap* r = flow_.remaps.find(w.address, w.number); r && r->programWordIsNumber)
+        call = true;
+  WordOptions opt;
+  opt.callNumber = call;
+  for (const ir::Word& w : b.words) {
+    if (w.kind != ir::ValueKind::Expression && w.address != "AX") {
+      flat.words.push_back(w);
+      continue;
+    }
+    ir::Word resolved = w;
+    if (w.address == "AX") { // AX[n]=v: the axis by its number in the channel (§2.6)
+      auto n = eval_.number(w.axisIndex.front());
+      if (!n) return false;
+      static const char* const names[] = {"X", "Y", "Z", "A", "B", "C"};
+      const long k = std::lround(*n);
+      if (k < 1 || k > 6)
+        return fail("2018", w.range, fmt::format("wrong physical axis number {}", k));
+      resolved.address = names[k - 1];
+      resolved.axisIndex.clear();
+    }
+    if (resolved.kind == ir::ValueKind::Number) { // AX[e]=<literal>
+      flat.words.push_back(std::move(resolved));
+      continue;
+    }
+    WordValue v = wordValue(resolved, eval_, opt);
+    if (v.result == WordResult::Error) return false;
+    if (v.result == WordResult::Dropped) continue;
+    resolved.kind = ir::ValueKind::Number;
+    resolved.number = v.number;
+    resolved.expr = ir::Expr{};
+    flat.words.push_back(std::move(resolved));
+  }
+  return true;
+}
+
+bool Expander::contour(std::int64_t ns, std::int64_t nf, std::vector<machine::ContourBlock>& out) {
+  const Frame& f = stack_.back();
+  const LoadedProgram& program = *f.program;
+  const std::size_t first = program.find(ns, f.pc);
+  const std::size_t last = first == LoadedProgram::npos ? first : program.find(nf, first);
+  if (first == LoadedProgram::npos || last == LoadedProgram::npos || last < first) return false;
+  for (std::size_t i = first; i <= last; ++i) {
+    const ir::Block& b = program.blocks[i];
+    machine::ContourBlock c;
+    c.from = provenance(b);
+    if (!b.stmts.empty())
+      c.block = b; // the interpreter reports it
+    else if (!flatten(b, c.block))
+      return false;
+    out.push_back(std::move(c));
+  }
+  return true;
+}
+
+bool Expander::runNcPart(const ir::Block& b, ir::Block nc, bool& stopped) {
+  stopped = false;
+  if (nc.words.empty()) return true;
+  if (onFlat_) onFlat_(nc);
+  if (machine_.execute(nc, provenance(b))) return true;
+  stopped = true;
+  if (machine_.ended()) done_ = true;
+  return machine_.ended();
+}
+
+bool Expander::ncBlock(Frame& f, const ir::Block& b) {
+  ir::Block flat;
+  if (!flatten(b, flat)) return false;
+  // inside a configured call, configured codes are ordinary (§5.8 P3, P4); without
+  // parameters no code is configured
+  if (flow_.configuredCall && machine_.hasParameters() && !insideConfiguredCall()) {
+    const std::size_t before = diags_.errorCount();
+    if (auto c = flow_.configuredCall(flat, parameters(), diags_))
+      return runConfiguredCall(f, b, flat, *c);
+    if (diags_.errorCount() != before) return false;
+  }
+  // the remapped codes of the block: a macro or modal call (the last one written), a
+  // subprogram call, a return, a program end (the first one written)
+  CodeMatch primary, subprogram, back, end;
+  for (ir::Word& w : flat.words) {
+    const CodeMatch m = match(w, flat);
+    if (!m.row) continue;
+    switch (m.row->action) {
+    case FlowAction::Builtin:
+      if (!m.row->builtin.empty()) w.address = m.row->builtin;
+      break;
+    case FlowAction::CallSubprogram:
+      if (!subprogram.row) subprogram = m;
+      break;
+    case FlowAction::Return:
+      if (!back.row) back = m;
+      break;
+    case FlowAction::EndProgram:
+      if (!end.row) end = m;
+      break;
+    default: // CallMacro, CallCycle, Modal*
+      primary = m;
+    }
+  }
+  if (primary.row && isModal(primary.row->action)) return modalBlock(f, b, flat, primary);
+  // a modal call made by every block: the block's words are the arguments (§5.6 E2)
+  if (const ModalCall* m = visibleModalCall(); m && m->everyBlock && !flat.words.empty())
+    return everyBlockCall(f, b, flat, *m);
+  if (primary.row) return call(f, b, primary);
+  if (subprogram.row || back.row || end.row) {
+    // the NC part of the block runs first, then the call or return (§1.4 K5)
+    ir::Block nc = flat;
+    std::erase_if(nc.words, [&](const ir::Word& w) {
+      if (w.kind == ir::ValueKind::Path) return true;
+      for (const CodeMatch* m : {&subprogram, &back, &end})
+        if (m->row && (w.range.begin.offset == m->code->range.begin.offset ||
+                       (m->row->programWord && w.is(m->row->programWord)) ||
+                       (m->row->repeatWord && w.is(m->row->repeatWord))))
+          return true;
+      return false;
+    });
+    bool stopped = false;
+    const bool ok = runNcPart(b, std::move(nc), stopped);
+    if (stopped) return ok;
+    if (subprogram.row) return call(f, b, subprogram);
+    if (back.row) return returnFromCall(f, flat, back);
+    machine_.finish(); // a code that ends the program (an FMS program end)
+    done_ = true;
+    return true;
+  }
+  return execute(f, b, flat);
+}
+
+bool Expander::execute(Frame& f, const ir::Block& b, const ir::Block& flat) {
+  if (onFlat_) onFlat_(flat);
+  if (!machine_.execute(flat, provenance(b))) {
+    if (machine_.ended()) {
+      done_ = true;
+      return true;
+    }
+    return false;
+  }
+  // G71.7-G73.7 whose contour follows: continue after its last block (cycles.md §4.7)
+  if (const auto nf = machine_.takeResumeAfter()) {
+    const std::size_t last = f.program->find(*nf, f.pc);
+    if (last != LoadedProgram::npos && last > f.pc) {
+      f.pc = last + 1;
+      return true;
+    }
+  }
+  // a modal call after each motion block: the most recent visible one (§5.5 D2, D3)
+  if (const ModalCall* m = visibleModalCall(); m && !m->everyBlock && movesAxes(flat)) {
+    const std::size_t index = static_cast<std::size_t>(m - modalCalls_.data());
+    return pushFrame(f, m->program, m->frame, m->args, m->times, m->what, b.range, index);
+  }
+  ++f.pc;
+  return true;
+}
+
+} // namespace gcx::macro

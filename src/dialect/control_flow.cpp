@@ -1,0 +1,28 @@
+#include "dialect/control_flow.h"
+
+namespace gcx {
+
+const Remap* RemapTable::find(std::string_view address, double value,
+                              std::optional<double> programValue) const {
+  for (const Remap& r : rows) {
+    if (r.address != address) continue;
+    if (r.code && (r.last ? value < *r.code || value > *r.last : value != *r.code)) continue;
+    if (r.onlyProgram && programValue != r.onlyProgram) continue;
+    return &r;
+  }
+  return nullptr;
+}
+
+ProgramCall programFromDigits(const Remap& r, std::string_view digits) {
+  ProgramCall call;
+  if (r.program == ProgramSource::Fixed) {
+    call.unit = r.fixedProgram;
+    return call;
+  }
+  const std::size_t n = r.nameDigits > 0 ? static_cast<std::size_t>(r.nameDigits) : digits.size();
+  call.unit = std::string(digits.substr(0, n));
+  if (digits.size() > n) call.times = std::stol(std::string(digits.substr(n)));
+  return call;
+}
+
+} // namespace gcx

@@ -1,0 +1,197 @@
+// How a dialect's programs call, return and keep variables: the hooks and tables the one
+// control-flow engine (passes/macro) reads. The engine owns frames, jumps, loops, calls, modal
+// calls and repeat counts; a dialect says which codes do what (its remap table), how its
+// variables are laid out, how a call binds its arguments, which variable writes are messages,
+// and how a program name becomes a file. docs/control-flow.md describes the whole.
+#pragma once
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gcx {
+
+namespace ir {
+struct Block;
+struct Word;
+} // namespace ir
+namespace diag {
+class Engine;
+}
+namespace machine {
+class Interpreter;
+}
+namespace macro {
+class SystemVariableStore;
+}
+
+/// What a remapped code does (LinuxCNC's remap is the model: a code becomes a built-in, a
+/// program or a cycle). In a block with CallSubprogram, Return or EndProgram the block's other
+/// words run first (nct.md §1.4 K5); a macro call's other words are its arguments.
+enum class FlowAction : unsigned char {
+  Builtin,             // the machine executes the code itself (FMS GG<n>: the built-in G<n>)
+  CallSubprogram,      // run a program in the caller's local frame (NCT M98)
+  CallMacro,           // run a program in a new local frame bound from the call's words (G65)
+  CallCycle,           // CallMacro of a system cycle: the profile's cycleMacro checks it first
+  Return,              // back to the caller, or repeat by the callee's count (NCT M99)
+  ModalCall,           // register a call made after every block that moves an axis (G66)
+  ModalCallEveryBlock, // register a call made after every NC block, and call now (G66.1)
+  ModalCancel,         // remove the most recent modal call (G67)
+  EndProgram,          // the program ends here (FMS M98)
+};
+
+/// Where the called program's name comes from.
+enum class ProgramSource : unsigned char {
+  None,       // no program (Return, ModalCancel, EndProgram, Builtin)
+  Word,       // the digits of another word of the block (NCT `M98 P12`: "12")
+  CodeDigits, // the digits of the remapped word itself (FMS `P019`: "019"; WL4 `L0703`: "07")
+  Fixed,      // always `program` (WL4 G81: "81")
+};
+
+/// How the callee's local variables start.
+enum class LocalFrame : unsigned char {
+  Shared,    // the caller's frame (NCT M98)
+  Arguments, // a new frame from the bound arguments (NCT G65)
+  Copy,      // a new frame, a copy of the caller's (WL4 `L nnpp`, wl4.md §5.1)
+};
+
+/// One row of a dialect's remap table: a code and what it does.
+struct Remap {
+  std::string address;        // "G", "M", "P", "L", "GG"
+  std::optional<double> code; // the word's value; nullopt: any value of the address
+  std::optional<double> last; // with code: a range code..last (WL4 G81-G89)
+  FlowAction action = FlowAction::Builtin;
+  ProgramSource program = ProgramSource::None;
+  char programWord = 0;     // ProgramSource::Word: its letter (also M99 P: where to return)
+  std::string fixedProgram; // ProgramSource::Fixed
+  std::string builtin;      // Builtin: the address the machine executes (FMS GG -> G)
+  std::optional<double> onlyProgram; // the row applies only when the program word has this value
+  /// CodeDigits: how many leading digits name the program; the rest count repeats
+  /// (WL4 `L nnpp`: 2). 0: all digits name the program.
+  int nameDigits = 0;
+  char repeatWord = 0; // the word giving the repeat count (NCT L)
+  LocalFrame frame = LocalFrame::Shared;
+  bool onlyIfProgramExists = false; // a user program overrides a built-in (FMS G<n>)
+  bool programWordIsNumber = false; // round and range-check the program word as a call number
+  bool fileWord = false; // a `<file>` word may name the program instead (NCT M98 <a.nct>)
+  /// A repeat count below 1: an error citing this rule, or (empty) no call at all.
+  std::string repeatBelowOneRule;
+  int modalGroup = 0; // Modal*: the modal group #40xx reports, and this code ×10
+  int modalCode10 = 0;
+  const char* spec = ""; // where the dialect specifies the row, for messages
+};
+
+/// A remap table, searched in order: the first matching row wins for a word.
+struct RemapTable {
+  std::vector<Remap> rows;
+  /// The row for a word `address value`, the program word's value given when the block has
+  /// one; null when the code is not remapped.
+  const Remap* find(std::string_view address, double value,
+                    std::optional<double> programValue = std::nullopt) const;
+};
+
+/// A remapped code's program, resolved from a word's digits: the unit name and repeat count.
+struct ProgramCall {
+  std::string unit;          // "12", "019", "07"
+  std::optional<long> times; // repeats taken from the digits (WL4 `L0703`: 3)
+};
+/// The program and repeats `digits` (the word's digits as written, no sign) give under row r.
+ProgramCall programFromDigits(const Remap& r, std::string_view digits);
+
+/// Variable numbers: the local frame, the commons (globals), and everything above is the
+/// dialect's system variables.
+struct VariableSpace {
+  int localFirst = 1;
+  int localLast = 33; // NCT #1-#33; WL4 #1-#29
+  int commonFirst = 100;
+  int commonLast = 999;
+  /// Slots of a local frame (indices 0..frameSize-1; NCT 34 for #1-#33).
+  int frameSize() const { return localLast + 1; }
+};
+
+/// Expression semantics a dialect chooses (the evaluator reads them).
+struct ExpressionChoices {
+  bool logicalAndOr = false; // AND/OR: bitwise on 32 bits (NCT) or logical (WL4)
+  bool fixFloors = false;    // FIX: truncate toward zero (NCT) or floor (WL4)
+};
+
+/// A write to a variable that is a message or alarm (NCT #3000 alarm, #3006 stop with message).
+struct MessageRule {
+  enum Kind : unsigned char { Alarm, Stop, Note } kind = Note;
+  int alarmBase = 0; // Alarm: the diagnostic code is alarmBase + the written number
+  int maxNumber = 0; // the written number must be 0..maxNumber
+};
+
+/// One argument of a call: a local variable from a word, or a fixed control value.
+struct ArgumentBinding {
+  int variable = 0;
+  const ir::Word* word = nullptr; // the value comes from this word
+  std::optional<double> literal;  // or is this number (NCT #10 = the call's G code)
+  bool vacant = false;            // or is vacant
+};
+struct CallArguments {
+  std::vector<ArgumentBinding> bindings;
+  const ir::Word* offending = nullptr; // set after an error
+  const char* code = nullptr;
+  std::string message;
+  bool ok() const { return offending == nullptr; }
+};
+/// How a call binds: a G65-type call (the program word and the repeat word are control words),
+/// a call by a configured code (every other word is an argument), or a call made by a modal
+/// every-block registration (the block's G, P, L become control values).
+enum class CallKind : unsigned char { Explicit, ConfiguredG, ConfiguredM, EveryBlock };
+struct CallSite {
+  const ir::Block* block = nullptr; // the words to bind (the call word removed)
+  CallKind kind = CallKind::Explicit;
+  double callCode = 0; // the call's code value
+  const ir::Word* programWord = nullptr;
+  /// Is this word's value a vacant bare reference (then it binds nothing)?
+  std::function<bool(const ir::Word&)> vacant;
+};
+
+/// A code the machine's parameters turn into a call (NCT N1704-N1754, nct-macro.md §5.8).
+struct ConfiguredCall {
+  enum Kind : unsigned char { MacroG, ModalG, MacroM, SubprogramM, SubprogramLetter } kind;
+  std::string unit; // the program called
+  const ir::Word* word = nullptr;
+  int valueVariable = 0; // the common variable receiving the word's value (0: none)
+};
+using ParameterLookup = std::function<double(const std::string& key, double fallback)>;
+
+struct ControlFlow {
+  RemapTable remaps;
+  VariableSpace variables;
+  ExpressionChoices expressions;
+  /// Words that mark a file as needing the expansion pass (calls, loops, jumps, prints).
+  std::vector<std::string> expansionMarkers;
+
+  /// The rule of a message variable #n, nullopt for an ordinary variable.
+  std::function<std::optional<MessageRule>(int number)> messageVariable;
+  /// Binds a call's arguments to local variables (NCT specifications I and II).
+  std::function<CallArguments(const CallSite&)> bindArguments;
+  /// The system variables of a run (NCT #1000 and up, #_NAME).
+  std::function<std::unique_ptr<macro::SystemVariableStore>(machine::Interpreter&, diag::Engine&)>
+      systemVariables;
+  /// A code the machine's parameters configure as a call; nullopt when none (or after
+  /// reporting an error: the caller compares the error count).
+  std::function<std::optional<ConfiguredCall>(const ir::Block& flat, const ParameterLookup&,
+                                              diag::Engine&)>
+      configuredCall;
+  /// A common variable protected against writes: the message to report, nullopt if writable.
+  std::function<std::optional<std::string>(int number, const ParameterLookup&)> writeProtected;
+  /// The setup parameter key of PRM[id, bit] (NCT "N1702", "N1757.0").
+  std::function<std::string(int id, std::optional<int> bit)> parameterKey;
+  /// DPRNT leaves out the '+' sign and leading zeros (NCT N1757 PNT).
+  std::function<bool(const ParameterLookup&)> printOmitsSign;
+
+  /// The file names, in search order, that may hold program `unit` called from a file with
+  /// extension `ext` (NCT "12" -> O0012.nct, O00000012.nct; FMS "019" -> 019.fms).
+  std::function<std::vector<std::string>(const std::string& unit, const std::string& ext)>
+      programFiles;
+  /// How messages name program `unit` (NCT "12" -> "O0012").
+  std::function<std::string(const std::string& unit)> programLabel;
+};
+
+} // namespace gcx
