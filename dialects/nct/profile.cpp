@@ -1,8 +1,9 @@
 #include "dialects/nct/profile.h"
 
+#include "cycles/pocket.h"
 #include "diag/diagnostic.h"
 #include "dialects/nct/arguments.h"
-#include "passes/cycles/pocket.h"
+#include "dialects/nct/machine_rules.h"
 
 namespace gcx::nct {
 
@@ -171,9 +172,8 @@ Profile build() {
   // nct.md §0.2 reference profile and §2.1 defaults (N1300/N1301 all 0, Q12 for G23)
   p.powerOnGCodes10 = {0,   170, 210, 900, 940, 400, 490, 540, 670, 800,
                        640, 980, 150, 500, 501, 690, 970, 131, 230};
-  p.spindleOrientMCodes = {19};
-  p.uvwIncremental = true;             // nct.md §1.4
-  p.arcRadiusTolerance = 0.01;         // N1339 Radius Diff (000:1340)
+  p.uvwIncremental = true; // nct.md §1.4
+  p.machine = machineRules();
   p.exclusiveMCodes = {3, 4, 5, 19};   // one spindle command per block (000:4278-4280)
   p.dataModeLCodes = {52, 75, 76, 77}; // G10 L52 parameters, L75-77 tool tables (nct.md §1.10)
   p.macroCallGCodes10 = {650, 660, 661};

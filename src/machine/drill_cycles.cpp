@@ -1,5 +1,5 @@
 // The interpreter's side of the drilling cycles (cycles.md §2-§3): which block drills, where
-// its holes are, and how the ops of passes/cycles/drilling.h become motion. What a cycle does
+// its holes are, and how the ops of cycles/drilling.h become motion. What a cycle does
 // is the cycles library's; here are only the machine's positions, transforms and events.
 #include <algorithm>
 #include <cmath>
@@ -8,6 +8,7 @@
 
 #include "diag/codes.h"
 #include "machine/interpreter.h"
+#include "machine/settings.h"
 #include "motion/geometry.h"
 
 namespace gcx::machine {
@@ -38,7 +39,7 @@ bool Interpreter::drillBlock(const BlockWords& w, bool consumedAxes) {
   if (consumedAxes) return afterMotion(w);
   const motion::PlaneAxes ax = motion::axesOf(state_.plane);
   const int n = ax.normal;
-  // A parallel axis (W in G17, N0103) programmed in the block becomes the drilling axis
+  // A parallel axis (W in G17, a setting) programmed in the block becomes the drilling axis
   // (000:9496-9501); otherwise the axis stays the one cycle mode drills along.
   const ir::Word* parallelWord = (parallelAxes_ >> n) & 1u ? w.extra[3 + n] : nullptr;
   const bool mainWord = w.axis[n] || w.uvw[n];
@@ -74,7 +75,7 @@ bool Interpreter::drillBlock(const BlockWords& w, bool consumedAxes) {
   if (!holes) return false;
   if (*holes == 0) return afterMotion(w); // data stored; M S T still execute (000:10348-10350)
 
-  const cycles::DrillConfig config = cycles::drillConfig(setup_);
+  const cycles::DrillConfig config = drillConfig(profile_, setup_);
   // §2.7: Q and E keep their size under scaling; the I J K shift is not transformed
   const Eigen::Matrix3d m = transforms_.matrix().linear();
   Eigen::Matrix2d inPlane;

@@ -1,7 +1,7 @@
 // The interpreter's side of the turning cycles (cycles.md §4): finding and checking the contour
 // blocks ns..nf, resolving them into moves on a scratch copy of the engine (so the contour means
 // exactly what the same blocks mean when G70.7 runs them), and G70.7 itself. The cycles'
-// geometry is passes/cycles/turning.h's.
+// geometry is cycles/turning.h's.
 #include <fmt/format.h>
 
 #include "diag/codes.h"

@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 
 #include "cycles/cycle_harness.h"
+#include "cycles/drilling.h"
 #include "diag/codes.h"
+#include "dialects/nct/profile.h"
+#include "machine/settings.h"
 #include "machine/setup.h"
-#include "passes/cycles/drilling.h"
 
 namespace gcx::test {
 namespace {
@@ -335,7 +337,7 @@ TEST(CyclesSpec_2_8, ParametersFromTheSetup) {
   machine::Setup s;
   s.parameters = {
       {"N1500", 0.7}, {"N0607.1", 0}, {"N1503.PTC", 1}, {"N0823", 29}, {"N0607.INX", 0}};
-  const cycles::DrillConfig c = cycles::drillConfig(s);
+  const cycles::DrillConfig c = machine::drillConfig(nct::profile(), s);
   EXPECT_EQ(c.returnG73, 0.7);
   EXPECT_EQ(c.clearanceG83, 1.0); // not set: the spec's test value
   EXPECT_FALSE(c.orient);
@@ -343,6 +345,8 @@ TEST(CyclesSpec_2_8, ParametersFromTheSetup) {
   EXPECT_TRUE(c.tapNormalPeck);
   EXPECT_FALSE(c.tapOrient);
   EXPECT_EQ(c.closeLoopMCode, 29);
+  EXPECT_STREQ(c.orientLabel, "N0607 ORI"); // messages name the setting as NCT does
+  EXPECT_STREQ(c.indexLabel, "N0607 INX");
 }
 
 } // namespace

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "cycles/turning.h"
 #include "diag/diagnostic.h"
-#include "passes/cycles/turning.h"
 
 namespace gcx::test {
 

@@ -1,10 +1,9 @@
-#include "passes/cycles/drilling_state.h"
+#include "cycles/drilling_state.h"
 
 #include <cmath>
 #include <fmt/format.h>
 
 #include "diag/codes.h"
-#include "machine/setup.h"
 
 namespace gcx::cycles {
 
@@ -98,32 +97,6 @@ std::optional<long> updateModal(DrillModal& m, const DrillWords& w, diag::Engine
     return std::nullopt;
   }
   return holes; // L0: the data are stored, nothing moves (000:9617)
-}
-
-DrillConfig drillConfig(const machine::Setup& setup) {
-  const DrillConfig d;
-  auto value = [&](const char* key, double fallback) { return setup.parameter(key, fallback); };
-  // A bit by name ("N0607.ORI") or, where the manual numbers it, by number ("N0607.1").
-  auto bit = [&](const char* name, const char* number, bool fallback) {
-    const double byNumber = number ? value(number, fallback ? 1 : 0) : (fallback ? 1 : 0);
-    return value(name, byNumber) != 0;
-  };
-  DrillConfig c;
-  c.returnG73 = value("N1500", d.returnG73);
-  c.clearanceG83 = value("N1501", d.clearanceG83);
-  c.extractionG85G89 = value("N1502", d.extractionG85G89);
-  c.tapReturn = value("N1504", d.tapReturn);
-  c.tapClearance = value("N1505", d.tapClearance);
-  c.tapExtraction = value("N1506", d.tapExtraction);
-  c.tapReturnOverride = value("N1507", d.tapReturnOverride);
-  c.tapOrient = bit("N1503.TSC", nullptr, d.tapOrient);                   // 000:9990-9998
-  c.tapNormalPeck = bit("N1503.PTC", "N1503.3", d.tapNormalPeck);         // 000:10057
-  c.extractionEnabled = bit("N1503.EOE", "N1503.4", d.extractionEnabled); // 000:10015
-  c.returnEnabled = bit("N1503.ROE", "N1503.5", d.returnEnabled);         // 000:10094
-  c.orient = bit("N0607.ORI", "N0607.1", d.orient);                       // 000:10167
-  c.indexable = bit("N0607.INX", "N0607.2", d.indexable);                 // 000:4559
-  c.closeLoopMCode = static_cast<int>(value("N0823", d.closeLoopMCode));  // 000:9993
-  return c;
 }
 
 } // namespace gcx::cycles

@@ -9,13 +9,9 @@
 #include "diag/diagnostic.h"
 #include "ir/source.h"
 
-namespace gcx::machine {
-struct Setup;
-}
-
 namespace gcx::cycles {
 
-/// The drilling cycles of group 09 (cycles.md §2.1). G83.1/G84.1/G86.1 (N1503 CSM=1) are the
+/// The drilling cycles of group 09 (cycles.md §2.1). G83.1/G84.1/G86.1 (the CSM setting) are the
 /// same cycles as G73/G74/G76 and map onto them.
 enum class DrillCycle : unsigned char {
   G73,   // high-speed peck drilling (000:9670)
@@ -114,26 +110,26 @@ inline void cancel(DrillModal& m) {
   m = DrillModal{};
 }
 
-/// Machine parameters of the cycles (§2.8). The seed gives no factory values: the
-/// defaults are the spec's test values, used when the setup does not set a parameter.
+/// Machine settings of the cycles (§2.8), as values; the machine reads them from the setup
+/// under the dialect's keys (machine/settings.h). The seed gives no factory values: the
+/// defaults are the spec's test values.
 struct DrillConfig {
-  double returnG73 = 0.5;         // N1500 Return Val G73: retract d
-  double clearanceG83 = 1.0;      // N1501 Clearance Val G83
-  double extractionG85G89 = 100;  // N1502 Extraction Override in G85, G89 (%)
-  double tapReturn = 0.5;         // N1504 Return Val in Tapping (PTC=0)
-  double tapClearance = 1.0;      // N1505 Clearance Val in Tapping (PTC=1)
-  double tapExtraction = 100;     // N1506 Extraction Override in Tapping (%)
-  double tapReturnOverride = 100; // N1507 Return Override in Tapping (%)
-  bool tapOrient = false;         // N1503 TSC: op 4 is M19 instead of M<N0823>
-  bool tapNormalPeck = false;     // N1503 #3 PTC: peck rigid tap retracts to R (as G83)
-  bool extractionEnabled = false; // N1503 #4 EOE: the rigid-tap retract override applies
-  bool returnEnabled = false;     // N1503 #5 ROE: N1507 applies to PTC=1 peck retracts
-  bool orient = true;             // N0607 #1 ORI: spindle orientation (G76, G87 variant B)
-  bool indexable = true;          // N0607 #2 INX: spindle position loop (G84.2, G84.3)
-  int closeLoopMCode = 24;        // N0823 M Code for Closing S Loop
+  double returnG73 = 0.5;         // high-speed peck retract d
+  double clearanceG83 = 1.0;      // peck drilling clearance
+  double extractionG85G89 = 100;  // retract override in G85, G89 (%)
+  double tapReturn = 0.5;         // peck rigid tapping retract (tapNormalPeck off)
+  double tapClearance = 1.0;      // peck rigid tapping clearance (tapNormalPeck on)
+  double tapExtraction = 100;     // rigid tapping retract override (%)
+  double tapReturnOverride = 100; // rigid tapping return override (%)
+  bool tapOrient = false;         // op 4 orients the spindle instead of closeLoopMCode
+  bool tapNormalPeck = false;     // peck rigid tap retracts to R (as G83)
+  bool extractionEnabled = false; // the rigid-tap retract override applies
+  bool returnEnabled = false;     // tapReturnOverride applies to peck retracts to R
+  bool orient = true;             // the spindle can be oriented (G76, G87 variant B)
+  bool indexable = true;          // the spindle has a position loop (G84.2, G84.3)
+  int closeLoopMCode = 24;        // the M code that closes the spindle position loop
+  const char* orientLabel = "";   // how messages name the orient and index settings
+  const char* indexLabel = "";
 };
-
-/// The parameters from a machine setup ("N1500", "N0607.ORI" or "N0607.1", ...).
-DrillConfig drillConfig(const machine::Setup& setup);
 
 } // namespace gcx::cycles

@@ -5,8 +5,8 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "passes/cycles/ops.h"
-#include "passes/cycles/turning_state.h"
+#include "cycles/ops.h"
+#include "cycles/turning_state.h"
 
 namespace gcx::cycles {
 

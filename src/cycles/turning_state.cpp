@@ -1,6 +1,6 @@
 // The first blocks of the two-block turning formats (cycles.md §4.8-§4.13) and their checks
 // (§7 CYC-PARAM).
-#include "passes/cycles/turning_state.h"
+#include "cycles/turning_state.h"
 
 #include <cmath>
 #include <fmt/format.h>

@@ -1,10 +1,10 @@
-#include "passes/cycles/kept_contours.h"
+#include "cycles/kept_contours.h"
 
 #include <fmt/format.h>
 
+#include "cycles/turning_state.h"
 #include "diag/codes.h"
 #include "dialect/profile.h"
-#include "passes/cycles/turning_state.h"
 
 namespace gcx::cycles {
 

@@ -1,8 +1,8 @@
 // The text form of cycle ops used by the test vectors (cycles.md §1.1, §8).
 #include <cmath>
 
+#include "cycles/ops.h"
 #include "emit/number.h"
-#include "passes/cycles/ops.h"
 
 namespace gcx::cycles {
 

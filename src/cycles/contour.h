@@ -5,8 +5,8 @@
 #include <optional>
 #include <vector>
 
+#include "cycles/turning_path.h"
 #include "diag/diagnostic.h"
-#include "passes/cycles/turning_path.h"
 
 namespace gcx::cycles {
 

@@ -3,8 +3,8 @@
 #include <fmt/format.h>
 #include <numbers>
 
+#include "cycles/turning_cycles.h"
 #include "diag/codes.h"
-#include "passes/cycles/turning_cycles.h"
 
 namespace gcx::cycles {
 

@@ -2,8 +2,8 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "cycles/turning_cycles.h"
 #include "diag/codes.h"
-#include "passes/cycles/turning_cycles.h"
 
 namespace gcx::cycles {
 

@@ -1,6 +1,6 @@
 // One hole of an NCT drilling cycle: checks (cycles.md §7), levels (§2.3), the op table of §3.1
 // and the peck arithmetic of §3.2. Op numbers are the manual's (000:9410-9421).
-#include "passes/cycles/drilling.h"
+#include "cycles/drilling.h"
 
 #include <algorithm>
 #include <cmath>
@@ -123,7 +123,8 @@ void deepPecks(Ops& o, const Hole& h, double c) { // G83 (000:9873-9883)
 void rigidTapHole(Ops& o, const Hole& h, const DrillRequest& req, const DrillConfig& cfg) {
   const int fwd = req.cycle == DrillCycle::G84_2 ? +1 : -1; // CW for G84.2 (000:10000-10003)
   const double speed = req.spindleSpeed;
-  // the retract override applies only with EOE=1: I, else N1506 (000:10012-10020, 10072-10080)
+  // the retract override applies only with EOE=1: I, else the tapExtraction setting
+  // (000:10012-10020, 10072-10080)
   const double extract =
       cfg.extractionEnabled
           ? (req.vars.overridePercent ? req.vars.overridePercent->value : cfg.tapExtraction)
@@ -147,7 +148,7 @@ void rigidTapHole(Ops& o, const Hole& h, const DrillRequest& req, const DrillCon
       if (k == n) break;
       if (cfg.tapNormalPeck) // PTC=1: as G83, back to R (000:10061-10063)
         o.tap(h.r, h.feed, speed, -fwd, back);
-      else // PTC=0: as G83.1, back by E / N1504 (000:10060, 10065-10067)
+      else // PTC=0: as G83.1, back by E / tapReturn (000:10060, 10065-10067)
         o.tap(lk - h.s * ret, h.feed, speed, -fwd, extract);
     }
   } else {
@@ -195,12 +196,12 @@ void standardHole(Ops& o, const Hole& h, const DrillRequest& req, const DrillCon
   auto spindleCW = [&] { o.op(OpKind::SpindleCW); };
   switch (req.cycle) {
   case DrillCycle::G73: {
-    const double d = req.vars.e ? req.vars.e->value : cfg.returnG73; // E, else N1500
+    const double d = req.vars.e ? req.vars.e->value : cfg.returnG73; // E, else the setting
     highSpeedPecks(o, h, d / h.scale);
     return rapidReturn(o, h, g99, none);
   }
   case DrillCycle::G83: {
-    const double c = req.vars.e ? req.vars.e->value : cfg.clearanceG83; // E, else N1501
+    const double c = req.vars.e ? req.vars.e->value : cfg.clearanceG83; // E, else the setting
     deepPecks(o, h, c / h.scale);
     return rapidReturn(o, h, g99, none);
   }
@@ -299,12 +300,14 @@ bool resolve(const DrillRequest& req, const SourceRange& where, const DrillConfi
   }
   if (req.cycle == DrillCycle::G76 && !cfg.orient) {
     diags.error(diag::code::CycleNoOrientation, where,
-                "G76, G87: the spindle cannot be oriented (N0607 ORI=0) (000:9746-9749)");
+                fmt::format("G76, G87: the spindle cannot be oriented ({}=0) (000:9746-9749)",
+                            cfg.orientLabel));
     return false;
   }
   if (rigidTap(req.cycle) && !cfg.indexable) {
-    diags.error(diag::code::CycleNotIndexable, where,
-                fmt::format("{}: spindle cannot be indexed (N0607 INX=0) (000:9927-9930)", name));
+    diags.error(
+        diag::code::CycleNotIndexable, where,
+        fmt::format("{}: spindle cannot be indexed ({}=0) (000:9927-9930)", name, cfg.indexLabel));
     return false;
   }
   if (!v.z || !v.r) {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
-#include "passes/cycles/turning_cycles.h"
+#include "cycles/turning_cycles.h"
 
 namespace gcx::cycles {
 

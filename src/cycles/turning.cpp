@@ -1,11 +1,11 @@
 // The turning-cycle dispatcher, the simple cycles G77.7/G78.7/G79.7 (cycles.md §4.4-§4.6), the
 // G70.7 return (§4.11) and the word helpers the other turning cycles share.
-#include "passes/cycles/turning.h"
+#include "cycles/turning.h"
 
 #include <fmt/format.h>
 
+#include "cycles/turning_cycles.h"
 #include "diag/codes.h"
-#include "passes/cycles/turning_cycles.h"
 
 namespace gcx::cycles {
 

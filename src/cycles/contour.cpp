@@ -1,5 +1,5 @@
 // Contour checks and geometry for the contour cycles (cycles.md §4.7-§4.10).
-#include "passes/cycles/contour.h"
+#include "cycles/contour.h"
 
 #include <cmath>
 #include <fmt/format.h>

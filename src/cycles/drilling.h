@@ -25,10 +25,10 @@
 #include <string_view>
 #include <vector>
 
+#include "cycles/drilling_state.h"
+#include "cycles/ops.h"
 #include "diag/diagnostic.h"
 #include "motion/event.h"
-#include "passes/cycles/drilling_state.h"
-#include "passes/cycles/ops.h"
 
 namespace gcx::cycles {
 

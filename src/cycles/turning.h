@@ -21,11 +21,11 @@
 #include <optional>
 #include <vector>
 
+#include "cycles/contour.h"
+#include "cycles/ops.h"
+#include "cycles/turning_state.h"
 #include "diag/diagnostic.h"
 #include "dialect/profile.h"
-#include "passes/cycles/contour.h"
-#include "passes/cycles/ops.h"
-#include "passes/cycles/turning_state.h"
 
 namespace gcx::cycles {
 

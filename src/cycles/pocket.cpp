@@ -1,4 +1,4 @@
-#include "passes/cycles/pocket.h"
+#include "cycles/pocket.h"
 
 #include <cmath>
 #include <fmt/format.h>

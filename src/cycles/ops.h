@@ -23,7 +23,7 @@ enum class OpKind : unsigned char {
   SpindleCCW,      // M4
   SpindleStop,     // M5
   SpindleOrient,   // M19 (oriented stop)
-  CloseLoop,       // M`value` (N0823): close the spindle position loop
+  CloseLoop,       // M`value` (DrillConfig::closeLoopMCode): close the spindle position loop
   ProgramStop,     // M0: the operator may act by hand, then presses START
   OverrideLock,    // NOOVR-ON, G63: overrides at 100 %, feed hold ignored
   OverrideRestore, // NOOVR-OFF: the group-15 code that was active before (G64 by default)

@@ -1,6 +1,6 @@
 // The per-family expanders behind expandTurning() (turning.h). Internal to the turning cycles.
 #pragma once
-#include "passes/cycles/turning.h"
+#include "cycles/turning.h"
 
 namespace gcx::cycles {
 
