@@ -9,24 +9,9 @@ namespace gcx::cycles {
 
 namespace {
 
-struct CodeRow {
-  int code10;
-  DrillCycle cycle;
-  const char* name;
-};
-
-// cycles.md §2.1; the CSM=1 aliases (000:9469-9473) come last so that cycleName gives G73...
-constexpr CodeRow kCodes[] = {
-    {730, DrillCycle::G73, "G73"},     {740, DrillCycle::G74, "G74"},
-    {760, DrillCycle::G76, "G76"},     {810, DrillCycle::G81, "G81"},
-    {820, DrillCycle::G82, "G82"},     {830, DrillCycle::G83, "G83"},
-    {840, DrillCycle::G84, "G84"},     {842, DrillCycle::G84_2, "G84.2"},
-    {843, DrillCycle::G84_3, "G84.3"}, {850, DrillCycle::G85, "G85"},
-    {860, DrillCycle::G86, "G86"},     {870, DrillCycle::G87, "G87"},
-    {880, DrillCycle::G88, "G88"},     {890, DrillCycle::G89, "G89"},
-    {831, DrillCycle::G73, "G83.1"},   {841, DrillCycle::G74, "G84.1"},
-    {861, DrillCycle::G76, "G86.1"},
-};
+// cycles.md §2.1, in the order of DrillCycle
+constexpr const char* kNames[] = {"G73",   "G74",   "G76", "G81", "G82", "G83", "G84",
+                                  "G84.2", "G84.3", "G85", "G86", "G87", "G88", "G89"};
 
 constexpr double kMaxRepetitions = 99999999; // 000:9616
 
@@ -40,16 +25,8 @@ bool negative(const std::optional<DrillWord>& w, char address, diag::Engine& dia
 
 } // namespace
 
-std::optional<DrillCycle> drillCycleFromCode10(int code10) {
-  for (const CodeRow& r : kCodes)
-    if (r.code10 == code10) return r.cycle;
-  return std::nullopt;
-}
-
 const char* cycleName(DrillCycle c) {
-  for (const CodeRow& r : kCodes)
-    if (r.cycle == c) return r.name;
-  return "G8?";
+  return kNames[static_cast<int>(c)];
 }
 
 std::optional<long> updateModal(DrillModal& m, const DrillWords& w, diag::Engine& diags) {

@@ -12,7 +12,7 @@
 namespace gcx::cycles {
 
 /// The drilling cycles of group 09 (cycles.md §2.1). G83.1/G84.1/G86.1 (the CSM setting) are the
-/// same cycles as G73/G74/G76 and map onto them.
+/// same cycles as G73/G74/G76: a dialect binds its codes to these (GCodeSpec::arg).
 enum class DrillCycle : unsigned char {
   G73,   // high-speed peck drilling (000:9670)
   G74,   // left-hand tapping, floating holder (000:9702)
@@ -30,8 +30,6 @@ enum class DrillCycle : unsigned char {
   G89,   // boring with dwell, feed retract (000:10291)
 };
 
-/// The cycle of a G code times ten (810 -> G81, 842 -> G84.2, 831 -> G73), or nullopt.
-std::optional<DrillCycle> drillCycleFromCode10(int code10);
 /// The G code as written: "G81", "G84.2".
 const char* cycleName(DrillCycle c);
 

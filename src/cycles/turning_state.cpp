@@ -94,11 +94,6 @@ bool hasAxisWord(const TurningWords& w) {
 
 } // namespace
 
-std::optional<TurningCycle> turningCycleFromCode10(int code10) {
-  if (code10 % 10 != 7 || code10 < 707 || code10 > 797) return std::nullopt;
-  return static_cast<TurningCycle>(code10 / 10 - 70);
-}
-
 const char* turningCycleName(TurningCycle c) {
   return kNames[static_cast<int>(c)];
 }

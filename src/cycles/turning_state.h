@@ -26,8 +26,6 @@ enum class TurningCycle : unsigned char {
   G79, // facing cycle (§4.6)
 };
 
-/// The cycle of a G code times ten (707 -> G70 ... 797 -> G79), or nullopt.
-std::optional<TurningCycle> turningCycleFromCode10(int code10);
 /// The code as written: "G71.7".
 const char* turningCycleName(TurningCycle c);
 

@@ -6,7 +6,9 @@
 #include <fmt/format.h>
 #include <limits>
 
+#include "cycles/drilling.h"
 #include "diag/codes.h"
+#include "machine/cycle_state.h"
 #include "machine/interpreter.h"
 #include "machine/settings.h"
 #include "motion/geometry.h"
@@ -30,7 +32,7 @@ void Interpreter::cancelCycleMode() {
   state_.cycle = GAction::CycleCancel;
   state_.returnToR = false; // G98 again (000:9456-9459)
   if (modalCodes_.size() > 10) modalCodes_[10] = 980;
-  cycles::cancel(drill_);
+  cycles::cancel(cycles_->drill);
 }
 
 bool Interpreter::drillBlock(const BlockWords& w, bool consumedAxes) {
@@ -46,7 +48,7 @@ bool Interpreter::drillBlock(const BlockWords& w, bool consumedAxes) {
   int slot = n;
   if (parallelWord)
     slot = 3 + n;
-  else if (!mainWord && drill_.cycle && drill_.axis == 3 + n)
+  else if (!mainWord && cycles_->drill.cycle && cycles_->drill.axis == 3 + n)
     slot = 3 + n;
   auto slotValue = [&](int s) { return s >= 3 ? extra_[s] : program_[s]; };
 
@@ -54,7 +56,7 @@ bool Interpreter::drillBlock(const BlockWords& w, bool consumedAxes) {
   dw.range = blockRange_;
   for (std::size_t i = 0; i < w.gWords.size(); ++i)
     if (w.gCodes[i] && w.gCodes[i]->action == GAction::DrillCycle)
-      dw.code = cycles::drillCycleFromCode10(w.gCodes[i]->code10);
+      dw.code = static_cast<cycles::DrillCycle>(w.gCodes[i]->arg); // the profile's binding
   dw.axis = slot;
   dw.axisPosition = slotValue(slot);
   dw.holeWord = w.hasAxisWord();
@@ -71,7 +73,7 @@ bool Interpreter::drillBlock(const BlockWords& w, bool consumedAxes) {
   dw.vars.overridePercent = drillWord(w.ijk[0], w.ijk[0] ? w.ijk[0]->number : 0, false);
   dw.l = drillWord(w.l, w.l ? w.l->number : 0, false);
 
-  const std::optional<long> holes = cycles::updateModal(drill_, dw, diags_);
+  const std::optional<long> holes = cycles::updateModal(cycles_->drill, dw, diags_);
   if (!holes) return false;
   if (*holes == 0) return afterMotion(w); // data stored; M S T still execute (000:10348-10350)
 
@@ -83,15 +85,15 @@ bool Interpreter::drillBlock(const BlockWords& w, bool consumedAxes) {
       m(ax.second, ax.second);
   for (long i = 1; i <= *holes; ++i) {
     cycles::DrillRequest req;
-    req.cycle = *drill_.cycle;
+    req.cycle = *cycles_->drill.cycle;
     req.ret = state_.returnToR ? cycles::DrillReturn::RLevel : cycles::DrillReturn::Initial;
     req.plane = state_.plane;
     req.position = program_;
     req.position[n] = slotValue(slot);
     // each repetition applies the block's increments again from the last hole (000:9647-9660)
     req.hole = target(w, true);
-    req.initial = *drill_.initial;
-    req.vars = drill_.vars;
+    req.initial = *cycles_->drill.initial;
+    req.vars = cycles_->drill.vars;
     req.feed = state_.feed;
     req.spindleSpeed = state_.spindleSpeed;
     req.spindleDirection = state_.spindleDirection;

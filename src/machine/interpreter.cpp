@@ -1,4 +1,5 @@
 #include "machine/interpreter.h"
+#include "machine/cycle_state.h"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -58,7 +59,7 @@ void Interpreter::resetModal() {
   const double speed = state_.spindleSpeed, feed = state_.feed;
   const int direction = state_.spindleDirection;
   state_ = ModalState{};
-  cycles::cancel(drill_);
+  cycles::cancel(cycles_->drill);
   state_.tool = tool, state_.selectedTool = selected;
   state_.spindleSpeed = speed, state_.spindleDirection = direction, state_.feed = feed;
   modalCodes_.fill(0);
@@ -275,7 +276,7 @@ bool Interpreter::executeBlock(const ir::Block& block) {
   for (const ir::Word* o : w.other)
     if (o->is('O')) state_.lastO = static_cast<int>(o->number);
   const ModalState before = state_;
-  pendingTurning_ = 0;
+  pendingTurning_ = nullptr;
   if (!applyModal(w)) return false;
   if (w.hasAxisWord() && !w.has(GAction::DataInput)) {
     const std::string key = workOffsetKey(state_.workOffset);
@@ -428,12 +429,12 @@ bool Interpreter::applyModal(const BlockWords& w) {
     case GAction::TurningCycle:
       if (deferCycles_) break;
       if (g->group == 0) { // one-shot: turningBlock() runs it
-        pendingTurning_ = g->code10;
+        pendingTurning_ = g;
         break;
       }
       // G77.7-G79.7 hold group 1: every block with axis words repeats the cycle (§4.1)
       state_.motion = GAction::TurningCycle;
-      turningMode_ = g->code10;
+      turningMode_ = g;
       turningEnd_.reset();
       turningTaper_.reset();
       if (state_.cycle == GAction::DrillCycle) cancelCycleMode();
@@ -878,7 +879,7 @@ bool Interpreter::move(const BlockWords& w) {
     return arc(w, to, extraTo, axisGiven(w, ax.first) || axisGiven(w, ax.second));
   }
   case GAction::TurningCycle:
-    return turningCycle(*cycles::turningCycleFromCode10(turningMode_), w);
+    return turningCycle(static_cast<cycles::TurningCycle>(turningMode_->arg), w);
   default:
     return fail(diag::code::NotImplemented, blockRange_, "motion mode not implemented yet");
   }

@@ -7,12 +7,12 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
-#include "cycles/drilling.h"
-#include "cycles/turning.h"
 #include "diag/diagnostic.h"
 #include "dialect/profile.h"
 #include "ir/block.h"
@@ -21,7 +21,30 @@
 #include "machine/transforms.h"
 #include "motion/event.h"
 
+namespace gcx::cycles {
+struct CycleOp;
+struct ContourSegment;
+struct TurningWords;
+enum class TurningCycle : unsigned char;
+} // namespace gcx::cycles
+
 namespace gcx::machine {
+
+struct CycleState; // cycle_state.h
+
+/// Owns the cycle state; a copy of the interpreter (the contour probe) copies it.
+class CycleStateBox {
+public:
+  CycleStateBox();
+  ~CycleStateBox();
+  CycleStateBox(const CycleStateBox& other);
+  CycleStateBox& operator=(const CycleStateBox& other);
+  CycleState& operator*() const { return *state_; }
+  CycleState* operator->() const { return state_.get(); }
+
+private:
+  std::unique_ptr<CycleState> state_;
+};
 
 /// The modal state a block inherits (nct.md §2.1 groups that affect motion).
 struct ModalState {
@@ -264,15 +287,14 @@ private:
   std::map<std::string, std::array<double, 3>> rotations_; // basic rotations per work system
   std::map<int, double> wear_;                             // G10 L11 length wear per register
   std::map<int, double> radiusWear_;                       // #13000+n radius wear per register
-  cycles::DrillModal drill_;
+  CycleStateBox cycles_; // the cycles library's modal memory (cycle_state.h)
   ContourSource contours_;
   std::optional<std::int64_t> resumeAfter_;
-  int pendingTurning_ = 0; // code10 of a one-shot turning cycle in the current block
-  cycles::TurningModal turning_;
-  int turningMode_ = 0;                // code10 of the modal G77.7-G79.7 while group 1 holds it
-  std::optional<Vec3> turningEnd_;     // its last end point: omitted X/Z repeat it (§4.1)
-  std::optional<double> turningTaper_; // and its R
-  int lockedFrom_ = 0;                 // the group-15 code a tapping cycle's G63 replaced
+  const GCodeSpec* pendingTurning_ = nullptr; // a one-shot turning cycle in the current block
+  const GCodeSpec* turningMode_ = nullptr;    // the modal G77.7-G79.7 while group 1 holds it
+  std::optional<Vec3> turningEnd_;            // its last end point: omitted X/Z repeat it (§4.1)
+  std::optional<double> turningTaper_;        // and its R
+  int lockedFrom_ = 0;                        // the group-15 code a tapping cycle's G63 replaced
   bool deferCycles_ = false;
   bool ended_ = false;
   bool speedProgrammed_ = false; // an S word was given (before it, the speed is unknown)

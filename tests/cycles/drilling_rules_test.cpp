@@ -323,12 +323,18 @@ TEST(CyclesSpec_9_Q20, RadiusCompensationWarns) {
 
 // --- §2.1 codes, §2.8 parameters ------------------------------------------------------------
 
-TEST(CyclesSpec_2_1, CodesAndCsmAliases) {
-  EXPECT_EQ(cycles::drillCycleFromCode10(842), DrillCycle::G84_2);
-  EXPECT_EQ(cycles::drillCycleFromCode10(831), DrillCycle::G73);
-  EXPECT_EQ(cycles::drillCycleFromCode10(841), DrillCycle::G74);
-  EXPECT_EQ(cycles::drillCycleFromCode10(861), DrillCycle::G76);
-  EXPECT_FALSE(cycles::drillCycleFromCode10(800));
+TEST(CyclesSpec_2_1, NctBindsItsCodesToTheCycles) {
+  // the NCT profile names the cycle each code runs (GCodeSpec::arg)
+  auto cycleOf = [](double code) {
+    const GCodeSpec* g = nct::profile().gcode(code);
+    EXPECT_TRUE(g && g->action == GAction::DrillCycle) << code;
+    return g ? static_cast<DrillCycle>(g->arg) : DrillCycle::G89;
+  };
+  EXPECT_EQ(cycleOf(84.2), DrillCycle::G84_2);
+  EXPECT_EQ(cycleOf(73), DrillCycle::G73);
+  EXPECT_EQ(cycleOf(81), DrillCycle::G81);
+  EXPECT_EQ(cycleOf(89), DrillCycle::G89);
+  EXPECT_EQ(nct::profile().gcode(80)->action, GAction::CycleCancel);
   EXPECT_STREQ(cycles::cycleName(DrillCycle::G84_3), "G84.3");
   EXPECT_STREQ(cycles::cycleName(DrillCycle::G73), "G73");
 }
