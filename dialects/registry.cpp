@@ -1,9 +1,11 @@
-// The table of dialects gcx knows. Adding a dialect = adding a row here and its folder.
+// The table of dialects gcx knows. Adding a dialect = adding a row here and its folder
+// (docs/adding-a-dialect.md).
 #include <algorithm>
 #include <filesystem>
 
 #include "dialect/dialect.h"
-#include "dialects/nct/printer.h"
+#include "dialects/nct/emitter.h"
+#include "dialects/nct/lexical_rules.h"
 #include "dialects/nct/profile.h"
 #include "dialects/nct/reader.h"
 
@@ -13,7 +15,8 @@ namespace {
 
 class NctSource : public BlockSource {
 public:
-  NctSource(std::istream& in, FileId file, diag::Engine& diags) : reader_(in, file, diags) {}
+  NctSource(std::istream& in, FileId file, diag::Engine& diags, front::Encoding encoding)
+      : reader_(in, file, diags, {}, encoding) {}
   bool next(ir::Block& out) override { return reader_.next(out); }
   bool sawInput() const override { return reader_.sawInput(); }
   std::size_t failedBlocks() const override { return reader_.stats().failed; }
@@ -29,10 +32,14 @@ const std::vector<Dialect>& dialects() {
       Dialect{"nct",
               {".nct"},
               &nct::profile,
-              [](std::istream& in, FileId f, diag::Engine& d) -> std::unique_ptr<BlockSource> {
-                return std::make_unique<NctSource>(in, f, d);
+              &nct::lexicalRules,
+              [](std::istream& in, FileId f, diag::Engine& d,
+                 front::Encoding e) -> std::unique_ptr<BlockSource> {
+                return std::make_unique<NctSource>(in, f, d, e);
               },
-              &nct::printBlock},
+              &nct::makeEmitter,
+              &nct::emitterCapabilities,
+              {}},
   };
   return all;
 }
@@ -51,6 +58,13 @@ const Dialect* dialectForPath(const std::string& path) {
     for (const std::string& e : d.extensions)
       if (e == ext) return &d;
   return nullptr;
+}
+
+std::vector<std::string> dialectNames() {
+  std::vector<std::string> names;
+  for (const Dialect& d : dialects())
+    names.push_back(d.name);
+  return names;
 }
 
 } // namespace gcx

@@ -41,6 +41,12 @@ std::string renderAll(const diag::Engine& diags, const SourceManager& sm, Outcom
   return unlocated;
 }
 
+std::string printBlock(const Dialect& dialect, const ir::Block& b) {
+  std::ostringstream out;
+  dialect.emitter(out)->block(b);
+  return out.str();
+}
+
 struct Parsed {
   std::vector<ir::Block> blocks;
   bool failed = false;
@@ -180,7 +186,7 @@ Outcome fmtRoundTrip(const std::string& dialectName, std::string_view input) {
   if (first.failed || !out.violation.empty()) return out;
   std::string printed;
   for (const ir::Block& b : first.blocks)
-    printed += dialect.print(b) + "\n";
+    printed += printBlock(dialect, b);
   out.outputBytes = printed.size();
   diag::Engine again(Bounds::maxErrors);
   const Parsed second = parseText(dialect, printed, sm, again, "printed");
@@ -201,7 +207,7 @@ Outcome fmtRoundTrip(const std::string& dialectName, std::string_view input) {
     const nlohmann::json b = ir::toJson(second.blocks[i], false);
     if (a != b) {
       out.violation = fmt::format("block {} changes in the round trip:\n  {}\n  {}\nprinted: {}", i,
-                                  a.dump(), b.dump(), dialect.print(first.blocks[i]));
+                                  a.dump(), b.dump(), printBlock(dialect, first.blocks[i]));
       return out;
     }
   }

@@ -1,12 +1,15 @@
 #include "dialects/nct/reader.h"
 
 #include "dialects/nct/fast_parser.h"
+#include "dialects/nct/lexical_rules.h"
 #include "dialects/nct/profile.h"
 
 namespace gcx::nct {
 
-Reader::Reader(std::istream& in, FileId file, diag::Engine& diags, front::ReaderLimits limits)
-    : bytes_(in, file, diags, limits), diags_(diags), profile_(profile()) {}
+Reader::Reader(std::istream& in, FileId file, diag::Engine& diags, front::ReaderLimits limits,
+               std::optional<front::Encoding> encoding)
+    : bytes_(in, file, diags, lexicalRules(), encoding.value_or(lexicalRules().encoding), limits),
+      diags_(diags), profile_(profile()) {}
 
 bool Reader::next(ir::Block& out) {
   while (bytes_.next(raw_)) {

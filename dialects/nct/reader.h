@@ -2,6 +2,7 @@
 #pragma once
 #include <istream>
 #include <memory>
+#include <optional>
 
 #include "dialect/profile.h"
 #include "dialects/nct/tree_builder.h"
@@ -18,7 +19,9 @@ struct ReaderStats {
 
 class Reader {
 public:
-  Reader(std::istream& in, FileId file, diag::Engine& diags, front::ReaderLimits limits = {});
+  /// encoding: the file's; empty means NCT's default (lexicalRules().encoding).
+  Reader(std::istream& in, FileId file, diag::Engine& diags, front::ReaderLimits limits = {},
+         std::optional<front::Encoding> encoding = {});
 
   /// The next well-formed block; blocks with errors are reported and skipped. False at the end.
   bool next(ir::Block& out);

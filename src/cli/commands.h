@@ -11,8 +11,9 @@ namespace gcx::cli {
 enum Exit { Ok = 0, ProgramErrors = 1, UsageError = 2 };
 
 struct CommonOptions {
-  std::string dialect; // empty: from the file extension
-  bool json = false;   // diagnostics as JSON
+  std::string dialect;  // empty: from the file extension
+  std::string encoding; // --encoding: empty: the dialect's own
+  bool json = false;    // diagnostics as JSON
   std::size_t maxErrors = 50;
   // execution (expand, run, plot)
   std::vector<std::string> libraryDirs; // --lib: where M98 P / G65 P look after the folder

@@ -1,12 +1,13 @@
 // gcx expand FILE --to canonical: the flat RS274/NGC program of the program's motion.
-// gcx expand FILE --to nct --expand macros,subprograms: the program with macro statements,
-// variables and calls flattened into plain NCT blocks, canned cycles kept.
+// gcx expand FILE --to <dialect> --expand macros,subprograms: the program with macro statements,
+// variables and calls flattened into plain blocks written by the dialect's emitter, canned
+// cycles kept (the target must have them).
 #include <filesystem>
+#include <fmt/format.h>
 
 #include "cli/commands.h"
 #include "cli/execute.h"
 #include "cycles/kept_contours.h"
-#include "dialects/nct/printer.h"
 #include "emit/canonical.h"
 #include "passes/macro/expander.h"
 
@@ -19,10 +20,17 @@ public:
   void event(const motion::Event&) override {}
 };
 
-int expandToNct(Session& s, const ExpandOptions& opt, const machine::Setup& setup) {
+int expandToDialect(Session& s, const Dialect& target, const ExpandOptions& opt,
+                    const machine::Setup& setup) {
   if (opt.expand != "macros,subprograms" && opt.expand != "subprograms,macros") {
-    reportUsage("--to nct supports --expand macros,subprograms (cycles stay cycles); expanding "
+    reportUsage("--to " + target.name +
+                " supports --expand macros,subprograms (cycles stay cycles); expanding "
                 "cycles is not implemented yet");
+    return UsageError;
+  }
+  if (!target.emits().has(emit::Construct::CannedCycles)) {
+    reportUsage("--to " + target.name +
+                " has no canned cycles, and expanding cycles is not implemented yet");
     return UsageError;
   }
   AtomicOutput out(opt.output);
@@ -44,6 +52,8 @@ int expandToNct(Session& s, const ExpandOptions& opt, const machine::Setup& setu
   expander.setPrintOutput(&print.stream());
   if (opt.common.fanucVacantOrder) expander.setVacantOrder(macro::VacantOrder::Fanuc);
   cycles::KeptContours contours(main->blocks, s.dialect().profile());
+  std::unique_ptr<emit::ProgramEmitter> emitter = target.emitter(out.stream());
+  emitter->beginProgram({});
   expander.onFlatBlock([&](const ir::Block& b) {
     ir::Block flat = b; // comments and numbers do not survive, but those kept cycles refer to
     if (flat.sequence && !contours.keepsNumber(*flat.sequence)) {
@@ -53,31 +63,54 @@ int expandToNct(Session& s, const ExpandOptions& opt, const machine::Setup& setu
     flat.comments.clear();
     if (flat.words.empty()) return;
     contours.written(flat);
-    out.stream() << nct::printBlock(flat) << '\n';
+    emitter->block(flat);
   });
   const bool ok = expander.run(*main) && contours.check(s.diags());
+  emitter->endProgram();
   s.flushDiagnostics();
   if (!ok) return ProgramErrors;
   return print.finish() && out.commit() ? Ok : UsageError;
 }
 
+// "canonical and --to nct": the targets expand writes
+std::string targetList() {
+  std::string list = "canonical";
+  const std::vector<std::string> names = dialectNames();
+  for (std::size_t i = 0; i < names.size(); ++i)
+    list += (i + 1 == names.size() ? " and --to " : ", --to ") + names[i];
+  return list;
+}
+
+// "--to nct": the targets that keep canned cycles
+std::string cycleTargets() {
+  std::string list;
+  for (const Dialect& d : dialects())
+    if (d.emits().has(emit::Construct::CannedCycles))
+      list += (list.empty() ? "--to " : ", --to ") + d.name;
+  return list;
+}
+
 } // namespace
 
 int runExpand(const std::string& file, const ExpandOptions& opt) {
-  if (opt.to != "canonical" && opt.to != "nct") {
-    reportUsage("--to " + opt.to + " is not implemented yet; --to canonical and --to nct are");
+  const Dialect* target = opt.to == "canonical" ? nullptr : findDialect(opt.to);
+  if (opt.to != "canonical" && !target) {
+    reportUsage("--to " + opt.to + " is not implemented yet; --to " + targetList() + " are");
     return UsageError;
   }
-  if (!opt.keep.empty() && (opt.keep != "cycles" || opt.to != "nct")) {
-    reportUsage(opt.keep != "cycles" ? "--keep takes cycles"
-                                     : "--keep cycles needs a target with canned cycles (--to "
-                                       "nct); canonical motion has none");
+  const bool keepsCycles = target && target->emits().has(emit::Construct::CannedCycles);
+  if (!opt.keep.empty() && (opt.keep != "cycles" || !keepsCycles)) {
+    reportUsage(opt.keep != "cycles"
+                    ? "--keep takes cycles"
+                    : fmt::format("--keep cycles needs a target with canned cycles ({}); {} has "
+                                  "none",
+                                  cycleTargets(), target ? target->name : "canonical motion"));
     return UsageError;
   }
   Session s(opt.common);
   machine::Setup setup;
   if (int rc = openWithSetup(s, file, opt.setup, setup)) return rc;
-  if (opt.to == "nct") return expandToNct(s, opt, setup);
+  if (target) return expandToDialect(s, *target, opt, setup);
   AtomicOutput out(opt.output);
   PrintOutput print(opt.common, opt.output.empty());
   if (!out.ok() || !print.ok()) return UsageError;

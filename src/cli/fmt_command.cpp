@@ -13,11 +13,14 @@ int runFmt(const std::string& file, const std::string& output, const CommonOptio
   AtomicOutput out(output);
   if (!out.ok()) return UsageError;
   check::StaticChecker checker(s.dialect().profile(), s.diags());
+  std::unique_ptr<emit::ProgramEmitter> emitter = s.dialect().emitter(out.stream());
+  emitter->beginProgram({});
   ir::Block block;
   while (s.source().next(block)) {
     checker.block(block);
-    out.stream() << s.dialect().print(block) << '\n';
+    emitter->block(block);
   }
+  emitter->endProgram();
   checker.finish(s.file(), s.source().failedBlocks() > 0);
   const bool failed = s.diags().hasErrors();
   s.flushDiagnostics();

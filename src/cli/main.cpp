@@ -3,9 +3,11 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fmt/format.h>
 #include <iostream>
 
 #include "cli/commands.h"
+#include "dialect/dialect.h"
 
 int main(int argc, char** argv) {
   using namespace gcx::cli;
@@ -26,7 +28,10 @@ int main(int argc, char** argv) {
   auto addCommon = [&](CLI::App* cmd) {
     cmd->add_option("--dialect", common.dialect,
                     "dialect of the input (default: from the extension)")
-        ->check(CLI::IsMember({"nct"}));
+        ->check(CLI::IsMember(gcx::dialectNames()));
+    cmd->add_option("--encoding", common.encoding,
+                    "encoding of the program files (default: the dialect's)")
+        ->check(CLI::IsMember(gcx::front::encodingNames()));
     cmd->add_flag("--json", common.json, "diagnostics as JSON");
     cmd->add_option("--max-errors", common.maxErrors, "stop after this many errors (1 or more)")
         ->check(atLeastOne);
@@ -78,7 +83,9 @@ int main(int argc, char** argv) {
   CLI::App* expand = app.add_subcommand("expand", "expand to flat motion in a target dialect");
   expand->add_option("FILE", expandFile, "program file")->required();
   expand
-      ->add_option("--to", expandOpt.to, "target: canonical (RS274/NGC that LinuxCNC runs) or nct")
+      ->add_option("--to", expandOpt.to,
+                   "target: canonical (RS274/NGC that LinuxCNC runs) or a dialect (" +
+                       fmt::format("{}", fmt::join(gcx::dialectNames(), ", ")) + ")")
       ->required();
   expand->add_option("-o,--output", expandOpt.output, "output file (default: standard output)");
   expand->add_option("--setup", expandOpt.setup, "machine setup (JSON): offsets, tools, ...");

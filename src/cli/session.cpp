@@ -18,8 +18,8 @@ bool Session::open(const std::string& path) {
     reportUsage(fmt::format("{}: is a directory [{}]", path, diag::code::CannotRead));
     return false;
   }
-  dialect_ = opt_.dialect.empty() ? dialectForPath(path) : findDialect(opt_.dialect);
-  if (!dialect_) {
+  const Dialect* dialect = opt_.dialect.empty() ? dialectForPath(path) : findDialect(opt_.dialect);
+  if (!dialect) {
     if (opt_.dialect.empty())
       reportUsage(
           fmt::format("{}: cannot tell the dialect from the extension; use --dialect", path));
@@ -27,6 +27,8 @@ bool Session::open(const std::string& path) {
       reportUsage(fmt::format("unknown dialect '{}'", opt_.dialect));
     return false;
   }
+  dialect_ = *dialect;
+  if (!opt_.encoding.empty()) dialect_->encoding = front::encodingByName(opt_.encoding);
   in_.open(path, std::ios::binary);
   if (!in_) {
     reportUsage(fmt::format("{}: cannot open: {} [{}]", path, std::strerror(errno),

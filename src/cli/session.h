@@ -3,6 +3,7 @@
 #pragma once
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "cli/commands.h"
@@ -18,8 +19,10 @@ public:
   /// Opens a program file and picks its dialect; false (with a message on stderr) if it cannot.
   bool open(const std::string& path);
   BlockSource& source() { return *source_; }
+  /// The dialect, reading the encoding --encoding chose (for the programs it calls too).
   const Dialect& dialect() const { return *dialect_; }
   const std::string& path() const { return path_; }
+
   FileId file() const { return file_; }
   diag::Engine& diags() { return diags_; }
   SourceManager& sources() { return sources_; }
@@ -32,7 +35,7 @@ private:
   SourceManager sources_;
   diag::Engine diags_;
   std::ifstream in_;
-  const Dialect* dialect_ = nullptr;
+  std::optional<Dialect> dialect_;
   std::string path_;
   FileId file_ = 0;
   std::unique_ptr<BlockSource> source_;

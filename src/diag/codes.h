@@ -33,6 +33,7 @@ inline constexpr const char* InvalidUtf8 = "GCX004";
 inline constexpr const char* BlockTooLong = "GCX005";
 inline constexpr const char* UnterminatedComment = "GCX006";
 inline constexpr const char* MisplacedPercent = "GCX007";
+inline constexpr const char* InvalidEncodedByte = "GCX008"; // not valid in the --encoding chosen
 inline constexpr const char* TooManyErrors = "GCX009";
 // --- gcx: static block checks
 inline constexpr const char* RepeatedAddress = "GCX011";
@@ -47,6 +48,7 @@ inline constexpr const char* SignAlias = "GCXW01";
 inline constexpr const char* SkipLevelNine = "GCXW02";
 inline constexpr const char* StrayParen = "GCXW03";
 inline constexpr const char* LoneCarriageReturn = "GCXW04";
+inline constexpr const char* LongBlock = "GCXW05"; // longer than the dialect's manual allows
 
 // --- machine: alarms the manual numbers (nct.md §3)
 inline constexpr const char* MirrorWithTransform = "2001";

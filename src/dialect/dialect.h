@@ -1,13 +1,17 @@
-// A dialect as the rest of gcx sees it: its profile, a streaming block source and a printer.
+// A dialect as the rest of gcx sees it: its profile, its lexical rules, a streaming block source
+// and a program-level emitter. dialects/registry.cpp lists them.
 #pragma once
-#include <functional>
 #include <istream>
 #include <memory>
+#include <optional>
+#include <ostream>
 #include <string>
 #include <vector>
 
 #include "diag/diagnostic.h"
 #include "dialect/profile.h"
+#include "emit/emitter.h"
+#include "front/lexical_rules.h"
 #include "ir/block.h"
 
 namespace gcx {
@@ -27,13 +31,23 @@ struct Dialect {
   std::string name;
   std::vector<std::string> extensions; // ".nct"
   const Profile& (*profile)();
-  std::function<std::unique_ptr<BlockSource>(std::istream&, FileId, diag::Engine&)> open;
-  std::string (*print)(const ir::Block&);
+  const front::LexicalRules& (*lexicalRules)();
+  std::unique_ptr<BlockSource> (*openSource)(std::istream&, FileId, diag::Engine&, front::Encoding);
+  std::unique_ptr<emit::ProgramEmitter> (*emitter)(std::ostream&);
+  emit::Capabilities (*emits)(); // what emitter() can express, without making one
+  /// The encoding open() reads; empty: the dialect's own (lexicalRules().encoding). A command
+  /// copies the registry's row and sets it from --encoding.
+  std::optional<front::Encoding> encoding;
+
+  std::unique_ptr<BlockSource> open(std::istream& in, FileId file, diag::Engine& diags) const {
+    return openSource(in, file, diags, encoding.value_or(lexicalRules().encoding));
+  }
 };
 
 const std::vector<Dialect>& dialects();
 const Dialect* findDialect(const std::string& name);
 /// The dialect a file name's extension implies, or null.
 const Dialect* dialectForPath(const std::string& path);
+std::vector<std::string> dialectNames();
 
 } // namespace gcx

@@ -12,39 +12,83 @@ bool isBlank(const std::string& text) {
   return text.find_first_not_of(" \t\r") == std::string::npos;
 }
 
-constexpr std::size_t kChunk = 1 << 16;
-
 bool isPlainChar(char c) {
   return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == ' ' || c == '.' || c == '+' ||
          c == '-' || c == '/';
 }
+
+bool isLetter(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+}
+
+std::string aliasWarning(const SignAlias& a) {
+  const std::string what = a.codePoint < 0x80
+                               ? fmt::format("'{}'", static_cast<char>(a.codePoint))
+                               : fmt::format("U+{:04X}", static_cast<unsigned>(a.codePoint));
+  return fmt::format("{} read as a {} sign '{}'{}", what, a.sign == '-' ? "minus" : "plus", a.sign,
+                     a.why);
+}
 } // namespace
 
-BlockReader::BlockReader(std::istream& in, FileId file, diag::Engine& diags, ReaderLimits limits)
-    : in_(in), file_(file), diags_(diags), limits_(limits) {
+BlockReader::BlockReader(std::istream& in, FileId file, diag::Engine& diags,
+                         const LexicalRules& rules, Encoding encoding, ReaderLimits limits)
+    : input_(in, encoding), encoding_(encoding), file_(file), diags_(diags), rules_(rules),
+      limits_(limits) {
   curBegin_ = SourceLoc{file_, 1, 1, 0};
+  classes_.fill(Plain);
+  for (char c : rules_.lineCommentMarkers)
+    classes_[static_cast<unsigned char>(c)] = LineMarker;
+  if (rules_.bracketComment) {
+    classes_[static_cast<unsigned char>(rules_.bracketComment->open)] = Open;
+    classes_[static_cast<unsigned char>(rules_.bracketComment->close)] = Close;
+  }
+  classes_['\n'] = LineFeed;
+  classes_['\0'] = Nul;
+  asciiAlias_.fill(-1);
+  for (std::size_t k = 0; k < rules_.signAliases.size(); ++k)
+    if (rules_.signAliases[k].codePoint < 0x80)
+      asciiAlias_[rules_.signAliases[k].codePoint] = static_cast<signed char>(k);
 }
 
 bool BlockReader::fill() {
-  if (eof_) return false;
-  buf_.resize(kChunk);
-  in_.read(buf_.data(), static_cast<std::streamsize>(kChunk));
-  buf_.resize(static_cast<std::size_t>(in_.gcount()));
   pos_ = 0;
-  if (buf_.empty())
-    eof_ = true;
-  else
-    sawAnyByte_ = true;
-  return !buf_.empty();
+  rawLine_ = 0;
+  switch (input_.read(buf_)) {
+  case DecodingInput::Status::Data:
+    return true;
+  case DecodingInput::Status::End:
+    buf_.clear();
+    return false;
+  case DecodingInput::Status::Invalid:
+    break;
+  }
+  buf_.clear();
+  const SourceLoc here{file_, line_, static_cast<std::uint32_t>(offset_ - lineStart_ + 1),
+                       offset_ + offsetShift_};
+  diags_.error(diag::code::InvalidEncodedByte, SourceRange{here, 1},
+               fmt::format("byte 0x{:02X} is not valid {} text; choose the file's encoding with "
+                           "--encoding",
+                           input_.invalidByte(), encodingName(encoding_)));
+  fatal_ = true;
+  return false;
+}
+
+void BlockReader::newLine() {
+  ++line_;
+  lineStart_ = offset_;
+  if (input_.converts()) offsetShift_ = input_.rawLineStarts()[rawLine_++] - offset_;
 }
 
 bool BlockReader::next(RawBlock& out) {
   for (;;) {
     if (fatal_) return false;
     if (pos_ >= buf_.size() && !fill()) {
+      if (fatal_) return false;
       if (inComment_) {
         diags_.error(diag::code::UnterminatedComment, SourceRange{commentLoc_, 1},
-                     "comment is not closed: '(' without ')' before the end of the file");
+                     fmt::format("comment is not closed: '{}' without '{}' before the end of the "
+                                 "file",
+                                 rules_.bracketComment->open, rules_.bracketComment->close));
         inComment_ = false;
         fatal_ = true;
         return false;
@@ -57,31 +101,37 @@ bool BlockReader::next(RawBlock& out) {
     const std::size_t size = buf_.size();
     while (pos_ < size) {
       const char c = data[pos_++];
-      const SourceLoc here{file_, line_, static_cast<std::uint32_t>(offset_ - lineStart_ + 1),
-                           offset_};
+      const ByteClass k = classes_[static_cast<unsigned char>(c)];
       ++offset_;
-      if (c == '\0') {
-        diags_.error(diag::code::BinaryFile, SourceRange{here, 1},
-                     "binary data (NUL byte): this is not a program text");
-        fatal_ = true;
-        return false;
-      }
-      if (c == '\n') {
-        ++line_;
-        lineStart_ = offset_;
-        if (!inComment_) {
+      if (k != Plain) {
+        const SourceLoc here{file_, line_, static_cast<std::uint32_t>(offset_ - lineStart_),
+                             offset_ - 1 + offsetShift_};
+        if (k == Nul) {
+          diags_.error(diag::code::BinaryFile, SourceRange{here, 1},
+                       "binary data (NUL byte): this is not a program text");
+          fatal_ = true;
+          return false;
+        }
+        const bool endsBlock = k == LineFeed && (!inComment_ || !rules_.bracketComment->spansLines);
+        if (k == LineFeed) newLine();
+        if (endsBlock) {
+          inComment_ = inLineComment_ = false;
           const bool got = finishBlock(out);
-          curBegin_ = SourceLoc{file_, line_, 1, offset_};
+          curBegin_ = SourceLoc{file_, line_, 1, offset_ + offsetShift_};
           if (got) return true;
           continue;
         }
-        curBreaks_.push_back(static_cast<std::uint32_t>(cur_.size()));
-      } else if (inComment_) {
-        if (c == ')') inComment_ = false;
-      } else if (c == '(') {
-        inComment_ = true;
-        commentStart_ = cur_.size();
-        commentLoc_ = here;
+        if (k == LineFeed) {
+          curBreaks_.push_back(static_cast<std::uint32_t>(cur_.size()));
+          curLineOffsets_.push_back(offset_ + offsetShift_);
+        } else if (inComment_) {
+          if (k == Close) inComment_ = false;
+        } else if (k == Open && !inLineComment_) {
+          inComment_ = true;
+          commentLoc_ = here;
+        } else if (k == LineMarker) {
+          inLineComment_ = true;
+        }
       }
       if (cur_.size() < limits_.maxBlockBytes)
         cur_.push_back(c);
@@ -95,6 +145,7 @@ bool BlockReader::finishBlock(RawBlock& out) {
   auto reset = [&] {
     cur_.clear();
     curBreaks_.clear();
+    curLineOffsets_.clear();
     overflow_ = false;
   };
   if (overflow_) {
@@ -112,75 +163,108 @@ bool BlockReader::finishBlock(RawBlock& out) {
   out.text.swap(cur_);
   out.begin = curBegin_;
   out.lineBreaks.swap(curBreaks_);
+  out.lineOffsets.swap(curLineOffsets_);
   out.plain = true;
   out.failed = false;
+  out.lineCommentAt = std::string::npos;
   reset();
+  if (!checkDialectLength(out)) return true;
   normalize(out);
   // a line of only ignored characters (a stray ')', a byte order mark) is a blank line too
   return out.failed || !isBlank(out.lexText);
 }
 
+// The dialect's own limit on a block's length, in characters (FMS-3000 254 with CR LF, WL4 80).
+bool BlockReader::checkDialectLength(RawBlock& b) {
+  if (rules_.maxBlockChars == 0 && rules_.warnBlockChars == 0) return true;
+  std::size_t chars = 0;
+  for (char c : b.text)
+    chars += (static_cast<unsigned char>(c) & 0xC0) != 0x80; // UTF-8 continuation bytes
+  if (rules_.maxBlockChars && chars > rules_.maxBlockChars) {
+    diags_.error(diag::code::BlockTooLong, b.rangeAt(0, 1),
+                 fmt::format("block of {} characters; the dialect allows at most {}", chars,
+                             rules_.maxBlockChars));
+    b.lexText.assign(b.text.size(), ' ');
+    b.failed = true;
+    return false;
+  }
+  if (rules_.warnBlockChars && chars > rules_.warnBlockChars)
+    diags_.warning(diag::code::LongBlock, b.rangeAt(0, 1),
+                   fmt::format("block of {} characters; the dialect's manual allows {}", chars,
+                               rules_.warnBlockChars));
+  return true;
+}
+
+bool BlockReader::keywordAt(const std::string& text, std::size_t i,
+                            const std::vector<std::string>& words) const {
+  if (i > 0 && isLetter(text[i - 1])) return false;
+  for (const std::string& w : words)
+    if (text.compare(i, w.size(), w) == 0 &&
+        (i + w.size() == text.size() || !isLetter(text[i + w.size()])))
+      return true;
+  return false;
+}
+
 void BlockReader::normalize(RawBlock& b) {
   b.lexText.assign(b.text);
   std::string& t = b.lexText;
-  const std::string& src = b.text;
-  bool comment = false;
-  bool loneCr = false; // a CR inside a block: the final one of CR LF is already gone
+  bool comment = false;     // inside a bracket comment
+  bool lineComment = false; // to the end of the block
+  bool loneCr = false;      // a CR inside a block: the final one of CR LF is already gone
+  if (!rules_.commentLineKeywords.empty()) {
+    const std::size_t first = t.find_first_not_of(" \t");
+    if (first != std::string::npos && keywordAt(t, first, rules_.commentLineKeywords)) {
+      lineComment = true;
+      b.lineCommentAt = first;
+    }
+  }
+  const char open = rules_.bracketComment ? rules_.bracketComment->open : '\0';
+  const char close = rules_.bracketComment ? rules_.bracketComment->close : '\0';
   for (std::size_t i = 0; i < t.size(); ++i) {
     const char c = t[i];
     const auto uc = static_cast<unsigned char>(c);
     if (uc >= 0x80) {
-      char32_t cp = 0;
-      std::size_t len = decodeUtf8(src.data() + i, src.size() - i, cp);
-      if (len == 0) {
-        diags_.error(
-            diag::code::InvalidUtf8, b.rangeAt(i, 1),
-            fmt::format("invalid UTF-8 byte 0x{:02X}; programs must be ASCII or UTF-8 text", uc));
-        b.failed = true;
-        fatal_ = true;
-        return;
-      }
-      if (comment) {
-        for (std::size_t k = 0; k < len; ++k)
-          t[i + k] = 'x';
-      } else if (cp == 0x2013 || cp == 0x2212) {
-        diags_.warning(diag::code::SignAlias, b.rangeAt(i, 1),
-                       fmt::format("U+{:04X} read as a minus sign '-'", static_cast<unsigned>(cp)));
-        t[i] = '-';
-        for (std::size_t k = 1; k < len; ++k)
-          t[i + k] = ' ';
-      } else if (cp == 0xFEFF && b.begin.offset + i == 0) {
-        for (std::size_t k = 0; k < len; ++k)
-          t[i + k] = ' '; // byte order mark
-      } else {
-        diags_.error(diag::code::SyntaxError, b.rangeAt(i, 1),
-                     fmt::format("unexpected character U+{:04X} outside a comment",
-                                 static_cast<unsigned>(cp)));
-        b.failed = true;
-        for (std::size_t k = 0; k < len; ++k)
-          t[i + k] = ' ';
-      }
-      i += len - 1;
+      normalizeNonAscii(b, i, comment || lineComment);
+      if (fatal_) return;
       continue;
     }
+    if (lineComment) continue;
     if (comment) {
-      if (c == ')') comment = false;
+      if (c == close) comment = false;
       continue;
     }
     if (c >= 'a' && c <= 'z') {
-      t[i] = static_cast<char>(c - 'a' + 'A');
-    } else if (c == '(') {
+      if (!rules_.lowerCaseKeywords.empty() && keywordAt(t, i, rules_.lowerCaseKeywords)) {
+        while (i + 1 < t.size() && t[i + 1] >= 'a' && t[i + 1] <= 'z')
+          ++i; // kept as written
+        b.plain = false;
+        continue;
+      }
+      if (rules_.letterCase == LetterCase::Fold) {
+        t[i] = static_cast<char>(c - 'a' + 'A');
+      } else if (rules_.letterCase == LetterCase::ErrorOutsideComments) {
+        diags_.error(diag::code::SyntaxError, b.rangeAt(i, 1),
+                     fmt::format("lower-case letter '{}' outside a comment", c));
+        b.failed = true;
+      }
+    } else if (c == open && open) {
       comment = true; // comments are allowed on the fast path
       continue;
-    } else if (c == ')') {
-      diags_.warning(diag::code::StrayParen, b.rangeAt(i, 1), "')' without '(' ignored");
+    } else if (c == close && close) {
+      diags_.warning(diag::code::StrayParen, b.rangeAt(i, 1),
+                     fmt::format("'{}' without '{}' ignored", close, open));
       t[i] = ' ';
-    } else if (c == '!') {
-      diags_.warning(diag::code::SignAlias, b.rangeAt(i, 1),
-                     "'!' read as a minus sign '-' (a symbol-font artefact, nct.md §0.1)");
-      t[i] = '-';
+    } else if (rules_.lineCommentMarkers.find(c) != std::string::npos) {
+      lineComment = true;
+      b.lineCommentAt = i;
+      b.plain = false;
+      continue;
+    } else if (asciiAlias_[uc] >= 0) {
+      const SignAlias& a = rules_.signAliases[static_cast<std::size_t>(asciiAlias_[uc])];
+      diags_.warning(diag::code::SignAlias, b.rangeAt(i, 1), aliasWarning(a));
+      t[i] = a.sign;
     } else if (c == '\t' || c == '\r') {
-      if (c == '\r' && !loneCr) {
+      if (c == '\r' && !loneCr && rules_.warnLoneCarriageReturn) {
         loneCr = true;
         diags_.warning(diag::code::LoneCarriageReturn, b.rangeAt(i, 1),
                        "carriage return without a line feed: blocks end at LF; a file with "
@@ -195,6 +279,46 @@ void BlockReader::normalize(RawBlock& b) {
     }
     if (!isPlainChar(t[i])) b.plain = false;
   }
+}
+
+// A character beyond ASCII at t[i] (UTF-8, the internal encoding): allowed in comments, a sign
+// alias or a byte order mark elsewhere, an error otherwise. Leaves i on its last byte.
+void BlockReader::normalizeNonAscii(RawBlock& b, std::size_t& i, bool comment) {
+  std::string& t = b.lexText;
+  const std::string& src = b.text;
+  char32_t cp = 0;
+  const std::size_t len = decodeUtf8(src.data() + i, src.size() - i, cp);
+  if (len == 0) {
+    diags_.error(diag::code::InvalidUtf8, b.rangeAt(i, 1),
+                 fmt::format("invalid UTF-8 byte 0x{:02X}; programs must be ASCII or UTF-8 text",
+                             static_cast<unsigned char>(t[i])));
+    b.failed = true;
+    fatal_ = true;
+    return;
+  }
+  const SignAlias* alias = nullptr;
+  for (const SignAlias& a : rules_.signAliases)
+    if (a.codePoint == cp) alias = &a;
+  if (comment) {
+    for (std::size_t k = 0; k < len; ++k)
+      t[i + k] = 'x';
+  } else if (alias) {
+    diags_.warning(diag::code::SignAlias, b.rangeAt(i, 1), aliasWarning(*alias));
+    t[i] = alias->sign;
+    for (std::size_t k = 1; k < len; ++k)
+      t[i + k] = ' ';
+  } else if (cp == 0xFEFF && b.begin.offset + i == 0) {
+    for (std::size_t k = 0; k < len; ++k)
+      t[i + k] = ' '; // byte order mark
+  } else {
+    diags_.error(
+        diag::code::SyntaxError, b.rangeAt(i, 1),
+        fmt::format("unexpected character U+{:04X} outside a comment", static_cast<unsigned>(cp)));
+    b.failed = true;
+    for (std::size_t k = 0; k < len; ++k)
+      t[i + k] = ' ';
+  }
+  i += len - 1;
 }
 
 } // namespace gcx::front

@@ -1,11 +1,15 @@
-// Cuts a byte stream into blocks, streaming: LF ends a block unless it stands inside a comment
-// (nct.md §1.5). Validates the bytes (binary data, UTF-8, block length) and prepares the ASCII
-// text the parsers read. Holds one block in memory at a time.
+// Cuts a byte stream into blocks, streaming, by a dialect's lexical rules (front/lexical_rules.h):
+// LF ends a block unless it stands inside a comment that may span lines (nct.md §1.5). Decodes
+// the file's encoding to UTF-8, validates the text (binary data, encoding, block length) and
+// prepares the ASCII text the parsers read. Holds one block in memory at a time.
 #pragma once
+#include <array>
 #include <istream>
 #include <string>
 
 #include "diag/diagnostic.h"
+#include "front/encoding.h"
+#include "front/lexical_rules.h"
 #include "front/raw_block.h"
 
 namespace gcx::front {
@@ -16,39 +20,55 @@ struct ReaderLimits {
 
 class BlockReader {
 public:
-  BlockReader(std::istream& in, FileId file, diag::Engine& diags, ReaderLimits limits = {});
+  BlockReader(std::istream& in, FileId file, diag::Engine& diags, const LexicalRules& rules,
+              Encoding encoding, ReaderLimits limits = {});
 
   /// The next non-blank block; false at end of input or after a fatal input error.
   bool next(RawBlock& out);
-  bool sawAnyByte() const { return sawAnyByte_; }
+  bool sawAnyByte() const { return input_.sawAnyByte(); }
 
 private:
-  bool fill();
-  bool finishBlock(RawBlock& out);
-  void normalize(RawBlock& b);
+  // what a byte means to the block cutter
+  enum ByteClass : unsigned char { Plain, Nul, LineFeed, Open, Close, LineMarker };
 
-  std::istream& in_;
+  bool fill();
+  void newLine();
+  bool finishBlock(RawBlock& out);
+  bool checkDialectLength(RawBlock& b);
+  void normalize(RawBlock& b);
+  void normalizeNonAscii(RawBlock& b, std::size_t& i, bool comment);
+  bool keywordAt(const std::string& text, std::size_t i,
+                 const std::vector<std::string>& words) const;
+
+  DecodingInput input_;
+  Encoding encoding_;
   FileId file_;
   diag::Engine& diags_;
+  const LexicalRules& rules_;
   ReaderLimits limits_;
+  std::array<ByteClass, 256> classes_{};
+  std::array<signed char, 128> asciiAlias_{}; // index into rules_.signAliases, or -1
 
   std::string buf_;
   std::size_t pos_ = 0;
-  bool eof_ = false;
   bool fatal_ = false;
-  bool sawAnyByte_ = false;
 
-  // position of the next byte to consume
+  // position of the next byte to consume, in the decoded text
   std::uint64_t offset_ = 0;
   std::uint32_t line_ = 1;
   std::uint64_t lineStart_ = 0;
+  // file offset minus text offset at the current line's start (0 unless the text is converted);
+  // SourceLoc::offset is a file offset, so a diagnostic can show the line as written
+  std::uint64_t offsetShift_ = 0;
+  std::size_t rawLine_ = 0; // next entry of input_.rawLineStarts()
 
   // block under construction
   std::string cur_;
   SourceLoc curBegin_;
   std::vector<std::uint32_t> curBreaks_;
-  bool inComment_ = false;
-  std::size_t commentStart_ = 0;
+  std::vector<std::uint64_t> curLineOffsets_;
+  bool inComment_ = false;     // between bracket comment's open and close
+  bool inLineComment_ = false; // after a line-comment marker
   SourceLoc commentLoc_;
   bool overflow_ = false;
 };

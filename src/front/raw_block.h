@@ -9,10 +9,12 @@
 namespace gcx::front {
 
 struct RawBlock {
-  std::string text;    // the bytes as written (CR of CR LF removed)
-  std::string lexText; // same length, ASCII: upper case outside comments, sign aliases -> '-'
+  std::string text;    // the text as written, in UTF-8 (CR of CR LF removed)
+  std::string lexText; // same length, ASCII: case folded outside comments, sign aliases -> '-'
   SourceLoc begin;     // first byte of the block (always column 1)
-  std::vector<std::uint32_t> lineBreaks; // positions of LFs inside the block (inside comments)
+  std::vector<std::uint32_t> lineBreaks;  // positions of LFs inside the block (inside comments)
+  std::vector<std::uint64_t> lineOffsets; // file offset of the line after each of lineBreaks
+  std::size_t lineCommentAt = std::string::npos; // where a comment to the end of the line starts
   bool plain = true;   // only letters, digits, `. + - /`, blanks and comments: fast-path candidate
   bool failed = false; // an error was already reported for this block; do not parse it
 
@@ -20,10 +22,11 @@ struct RawBlock {
     SourceLoc l = begin;
     l.offset += pos;
     std::size_t lineStart = 0;
-    for (std::uint32_t br : lineBreaks) {
-      if (br >= pos) break;
+    for (std::size_t k = 0; k < lineBreaks.size(); ++k) {
+      if (lineBreaks[k] >= pos) break;
       ++l.line;
-      lineStart = br + 1;
+      lineStart = lineBreaks[k] + 1;
+      l.offset = lineOffsets[k] + (pos - lineStart);
     }
     l.col = static_cast<std::uint32_t>(pos - lineStart + 1);
     return l;

@@ -21,7 +21,7 @@ std::vector<std::string> collect(const diag::Engine& e, diag::Severity sev) {
 }
 
 void run(Parsed& p, std::istream& in, FileId file, const ParseOptions& opt) {
-  nct::Reader reader(in, file, p.diags);
+  nct::Reader reader(in, file, p.diags, {}, opt.encoding);
   reader.setFastPath(opt.fastPath);
   check::StaticChecker checker(nct::profile(), p.diags);
   ir::Block b;

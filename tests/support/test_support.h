@@ -2,10 +2,12 @@
 // checks, and find corpus files.
 #pragma once
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "diag/diagnostic.h"
+#include "front/encoding.h"
 #include "ir/block.h"
 
 namespace gcx::test {
@@ -29,6 +31,7 @@ struct ParseOptions {
   bool fastPath = true;
   bool staticChecks = true;
   std::string name = "test.nct";
+  std::optional<front::Encoding> encoding = std::nullopt; // empty: NCT's own
 };
 
 /// Parses NCT text (as a file named opt.name) and runs the static checks.

@@ -1,0 +1,100 @@
+// The command line's dialect plumbing: --encoding, and --dialect / expand --to from the registry.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fmt/format.h>
+#include <fstream>
+#include <unistd.h>
+
+#include "support/test_support.h"
+
+namespace gcx::test {
+namespace {
+
+struct Result {
+  int exitCode = -1;
+  std::string out;
+  std::string err;
+};
+
+class DialectCli : public testing::Test {
+protected:
+  void SetUp() override {
+    // ctest runs tests as parallel processes: a folder of this process's own
+    dir_ = fs::temp_directory_path() / fmt::format("gcx-dialect-cli-{}", getpid());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path write(const std::string& name, const std::string& bytes) {
+    const fs::path p = dir_ / name;
+    std::ofstream(p, std::ios::binary) << bytes;
+    return p;
+  }
+  Result gcx(const std::string& args) {
+    const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
+    const std::string cmd = fmt::format("cd {} && {} {} >{} 2>{}", dir_.string(), GCX_BINARY, args,
+                                        out.string(), err.string());
+    Result r;
+    r.exitCode = WEXITSTATUS(std::system(cmd.c_str()));
+    r.out = readFile(out);
+    r.err = readFile(err);
+    return r;
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(DialectCli, FmtOfAKoi8rFileWritesItsCommentsInUtf8) {
+  write("O0001.nct", "G1 X1 (\xF0\xF2\xE9\xF7\xE5\xF4)\nM30\n");
+  const Result r = gcx("fmt O0001.nct --encoding koi8-r");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out, "G1 X1 (\u041F\u0420\u0418\u0412\u0415\u0422)\nM30\n");
+}
+
+TEST_F(DialectCli, CalledProgramsAreReadInTheChosenEncoding) {
+  write("O0001.nct", "M98 P2 (\xCF)\nM30\n");
+  write("O0002.nct", "G0 X5 (\xD0)\nM99\n");
+  const Result r = gcx("expand O0001.nct --to nct --encoding cp1251");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out, "G0 X5\nM30\n");
+  // UTF-8, NCT's default, rejects the CP1251 byte of the called program
+  EXPECT_NE(gcx("check O0002.nct").err.find("O0002.nct:1:8: error: invalid UTF-8"),
+            std::string::npos);
+}
+
+TEST_F(DialectCli, InvalidByteIsALocatedErrorWithExitOne) {
+  write("O0001.nct", "G1 X1\n(\x98)\n");
+  const Result r = gcx("check O0001.nct --encoding cp1251");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("O0001.nct:2:2: error: byte 0x98 is not valid cp1251 text; choose the "
+                       "file's encoding with --encoding [GCX008]"),
+            std::string::npos)
+      << r.err;
+}
+
+TEST_F(DialectCli, UnknownEncodingOrDialectIsAUsageError) {
+  write("O0001.nct", "M30\n");
+  EXPECT_EQ(gcx("check O0001.nct --encoding latin1").exitCode, 2);
+  const Result r = gcx("check O0001.nct --dialect fms");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("fms not in {nct}"), std::string::npos) << r.err;
+}
+
+TEST_F(DialectCli, ExpandTargetsComeFromTheRegistry) {
+  write("O0001.nct", "G81 X1 Y1 Z-1 R1 F100\nG80\nM30\n");
+  Result r = gcx("expand O0001.nct --to wl4");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.err,
+            "gcx: error: --to wl4 is not implemented yet; --to canonical and --to nct are\n");
+  r = gcx("expand O0001.nct --to canonical --keep cycles");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.err, "gcx: error: --keep cycles needs a target with canned cycles (--to nct); "
+                   "canonical motion has none\n");
+  r = gcx("expand O0001.nct --to nct --keep cycles");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out, "G81 X1 Y1 Z-1 R1 F100\nG80\nM30\n");
+}
+
+} // namespace
+} // namespace gcx::test
