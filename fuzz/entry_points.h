@@ -22,11 +22,11 @@ struct Outcome {
 /// The harness's bounds: small limits so a runaway program costs milliseconds, not minutes.
 struct Bounds {
   static constexpr std::size_t maxErrors = 50;
-  static constexpr std::uint64_t maxJumps = 10'000;
-  static constexpr std::uint64_t maxBlocks = 100'000;
-  static constexpr std::uint64_t maxMoves = 5'000;
+  static constexpr std::uint64_t maxJumps = 1'000;
+  static constexpr std::uint64_t maxBlocks = 20'000;
+  static constexpr std::uint64_t maxMoves = 1'000;
   // the harness's own cap, for events that are not moves (modal changes, dwells)
-  static constexpr std::size_t maxEvents = 20'000;
+  static constexpr std::size_t maxEvents = 2'000;
   static constexpr std::size_t maxOutputBytes = 256 << 10;
 };
 
