@@ -82,15 +82,22 @@ bool BlockReader::fill() {
     buf_.clear();
     return false;
   case DecodingInput::Status::Invalid:
+  case DecodingInput::Status::Unavailable:
     break;
   }
   buf_.clear();
   const SourceLoc here{file_, line_, static_cast<std::uint32_t>(offset_ - lineStart_ + 1),
                        offset_ + offsetShift_};
-  diags_.error(diag::code::InvalidEncodedByte, SourceRange{here, 1},
-               fmt::format("byte 0x{:02X} is not valid {} text; choose the file's encoding with "
-                           "--encoding",
-                           input_.invalidByte(), encodingName(encoding_)));
+  if (input_.converts())
+    diags_.error(diag::code::InvalidEncodedByte, SourceRange{here, 1},
+                 fmt::format("byte 0x{:02X} is not valid {} text; choose the file's encoding "
+                             "with --encoding",
+                             input_.invalidByte(), encodingName(encoding_)));
+  else
+    diags_.error(diag::code::InvalidEncodedByte, SourceRange{here, 1},
+                 fmt::format("this system's iconv cannot read {} (glibc's gconv modules are "
+                             "missing)",
+                             encodingName(encoding_)));
   fatal_ = true;
   return false;
 }
