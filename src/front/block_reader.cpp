@@ -48,6 +48,28 @@ BlockReader::BlockReader(std::istream& in, FileId file, diag::Engine& diags,
   for (std::size_t k = 0; k < rules_.signAliases.size(); ++k)
     if (rules_.signAliases[k].codePoint < 0x80)
       asciiAlias_[rules_.signAliases[k].codePoint] = static_cast<signed char>(k);
+  classifyForLexText();
+}
+
+// What each byte asks of normalize(); later assignments override earlier ones.
+void BlockReader::classifyForLexText() {
+  for (unsigned c = 0; c < 256; ++c) {
+    const char ch = static_cast<char>(c);
+    lexClasses_[c] = c >= 0x80                ? NonAscii
+                     : c < 0x20 || c == 0x7F  ? Control
+                     : isPlainChar(ch)        ? PlainText
+                     : ch >= 'a' && ch <= 'z' ? Lower
+                                              : OtherText;
+  }
+  lexClasses_['\t'] = lexClasses_['\r'] = Blank;
+  for (unsigned c = 0; c < 128; ++c)
+    if (asciiAlias_[c] >= 0) lexClasses_[c] = Alias;
+  for (char c : rules_.lineCommentMarkers)
+    lexClasses_[static_cast<unsigned char>(c)] = LineCommentMarker;
+  if (rules_.bracketComment) {
+    lexClasses_[static_cast<unsigned char>(rules_.bracketComment->open)] = CommentOpen;
+    lexClasses_[static_cast<unsigned char>(rules_.bracketComment->close)] = CommentClose;
+  }
 }
 
 bool BlockReader::fill() {
@@ -60,15 +82,22 @@ bool BlockReader::fill() {
     buf_.clear();
     return false;
   case DecodingInput::Status::Invalid:
+  case DecodingInput::Status::Unavailable:
     break;
   }
   buf_.clear();
   const SourceLoc here{file_, line_, static_cast<std::uint32_t>(offset_ - lineStart_ + 1),
                        offset_ + offsetShift_};
-  diags_.error(diag::code::InvalidEncodedByte, SourceRange{here, 1},
-               fmt::format("byte 0x{:02X} is not valid {} text; choose the file's encoding with "
-                           "--encoding",
-                           input_.invalidByte(), encodingName(encoding_)));
+  if (input_.converts())
+    diags_.error(diag::code::InvalidEncodedByte, SourceRange{here, 1},
+                 fmt::format("byte 0x{:02X} is not valid {} text; choose the file's encoding "
+                             "with --encoding",
+                             input_.invalidByte(), encodingName(encoding_)));
+  else
+    diags_.error(diag::code::InvalidEncodedByte, SourceRange{here, 1},
+                 fmt::format("this system's iconv cannot read {} (glibc's gconv modules are "
+                             "missing)",
+                             encodingName(encoding_)));
   fatal_ = true;
   return false;
 }
@@ -218,22 +247,22 @@ void BlockReader::normalize(RawBlock& b) {
       b.lineCommentAt = first;
     }
   }
-  const char open = rules_.bracketComment ? rules_.bracketComment->open : '\0';
-  const char close = rules_.bracketComment ? rules_.bracketComment->close : '\0';
   for (std::size_t i = 0; i < t.size(); ++i) {
-    const char c = t[i];
-    const auto uc = static_cast<unsigned char>(c);
-    if (uc >= 0x80) {
+    const auto uc = static_cast<unsigned char>(t[i]);
+    const LexClass k = lexClasses_[uc];
+    if (k == PlainText) continue; // the bulk of a program: nothing to do in any state
+    if (k == NonAscii) {
       normalizeNonAscii(b, i, comment || lineComment);
       if (fatal_) return;
       continue;
     }
     if (lineComment) continue;
     if (comment) {
-      if (c == close) comment = false;
+      if (k == CommentClose) comment = false;
       continue;
     }
-    if (c >= 'a' && c <= 'z') {
+    switch (k) {
+    case Lower:
       if (!rules_.lowerCaseKeywords.empty() && keywordAt(t, i, rules_.lowerCaseKeywords)) {
         while (i + 1 < t.size() && t[i + 1] >= 'a' && t[i + 1] <= 'z')
           ++i; // kept as written
@@ -241,41 +270,52 @@ void BlockReader::normalize(RawBlock& b) {
         continue;
       }
       if (rules_.letterCase == LetterCase::Fold) {
-        t[i] = static_cast<char>(c - 'a' + 'A');
+        t[i] = static_cast<char>(uc - 'a' + 'A');
       } else if (rules_.letterCase == LetterCase::ErrorOutsideComments) {
         diags_.error(diag::code::SyntaxError, b.rangeAt(i, 1),
-                     fmt::format("lower-case letter '{}' outside a comment", c));
+                     fmt::format("lower-case letter '{}' outside a comment", t[i]));
         b.failed = true;
       }
-    } else if (c == open && open) {
+      break;
+    case CommentOpen:
       comment = true; // comments are allowed on the fast path
       continue;
-    } else if (c == close && close) {
+    case CommentClose:
       diags_.warning(diag::code::StrayParen, b.rangeAt(i, 1),
-                     fmt::format("'{}' without '{}' ignored", close, open));
+                     fmt::format("'{}' without '{}' ignored", rules_.bracketComment->close,
+                                 rules_.bracketComment->open));
       t[i] = ' ';
-    } else if (rules_.lineCommentMarkers.find(c) != std::string::npos) {
+      break;
+    case LineCommentMarker:
       lineComment = true;
       b.lineCommentAt = i;
       b.plain = false;
       continue;
-    } else if (asciiAlias_[uc] >= 0) {
+    case Alias: {
       const SignAlias& a = rules_.signAliases[static_cast<std::size_t>(asciiAlias_[uc])];
       diags_.warning(diag::code::SignAlias, b.rangeAt(i, 1), aliasWarning(a));
       t[i] = a.sign;
-    } else if (c == '\t' || c == '\r') {
-      if (c == '\r' && !loneCr && rules_.warnLoneCarriageReturn) {
+      break;
+    }
+    case Blank:
+      if (uc == '\r' && !loneCr && rules_.warnLoneCarriageReturn) {
         loneCr = true;
         diags_.warning(diag::code::LoneCarriageReturn, b.rangeAt(i, 1),
                        "carriage return without a line feed: blocks end at LF; a file with "
                        "CR-only line ends (old Macintosh) must be converted to LF or CR LF");
       }
       t[i] = ' ';
-    } else if (uc < 0x20 || uc == 0x7F) {
+      break;
+    case Control:
       diags_.error(diag::code::SyntaxError, b.rangeAt(i, 1),
                    fmt::format("unexpected control character 0x{:02X}", uc));
       b.failed = true;
       t[i] = ' ';
+      break;
+    case OtherText:
+    case PlainText:
+    case NonAscii:
+      break;
     }
     if (!isPlainChar(t[i])) b.plain = false;
   }

@@ -31,6 +31,21 @@ private:
   // what a byte means to the block cutter
   enum ByteClass : unsigned char { Plain, Nul, LineFeed, Open, Close, LineMarker };
 
+  // what a byte asks of normalize(), outside comments
+  enum LexClass : unsigned char {
+    PlainText, // kept, and fit for the fast path: A-Z 0-9 space . + - /
+    OtherText, // kept: the parser decides (# [ ] = ...)
+    Lower,
+    CommentOpen,
+    CommentClose,
+    LineCommentMarker,
+    Alias,
+    Blank, // tab, CR: read as a space
+    Control,
+    NonAscii
+  };
+
+  void classifyForLexText();
   bool fill();
   void newLine();
   bool finishBlock(RawBlock& out);
@@ -48,6 +63,7 @@ private:
   ReaderLimits limits_;
   std::array<ByteClass, 256> classes_{};
   std::array<signed char, 128> asciiAlias_{}; // index into rules_.signAliases, or -1
+  std::array<LexClass, 256> lexClasses_{};
 
   std::string buf_;
   std::size_t pos_ = 0;

@@ -3,7 +3,6 @@
 #include <array>
 #include <cerrno>
 #include <iconv.h>
-#include <stdexcept>
 
 namespace gcx::front {
 
@@ -56,8 +55,10 @@ std::vector<std::string> encodingNames() {
 DecodingInput::DecodingInput(std::istream& in, Encoding encoding) : in_(in) {
   if (encoding == Encoding::Utf8) return; // the internal encoding: pass through
   iconv_t cd = iconv_open("UTF-8", named(encoding).iconvName);
-  if (cd == reinterpret_cast<iconv_t>(-1))
-    throw std::runtime_error("iconv cannot convert from " + std::string(named(encoding).name));
+  if (cd == reinterpret_cast<iconv_t>(-1)) {
+    unavailable_ = true; // glibc without its gconv modules: read() says so
+    return;
+  }
   cd_ = cd;
 }
 
@@ -83,6 +84,7 @@ bool DecodingInput::refill() {
 }
 
 DecodingInput::Status DecodingInput::read(std::string& out) {
+  if (unavailable_) return Status::Unavailable;
   if (!cd_) { // UTF-8: the bytes as they are
     if (!refill()) return Status::End;
     out.swap(raw_);
@@ -91,8 +93,8 @@ DecodingInput::Status DecodingInput::read(std::string& out) {
   }
   rawLineStarts_.clear();
   if (rawPos_ >= raw_.size() && !refill()) return Status::End;
-  out.resize(kChunk * kMaxGrowth);
   for (;;) {
+    out.resize(kChunk * kMaxGrowth);
     char* in = raw_.data() + rawPos_;
     std::size_t inLeft = raw_.size() - rawPos_;
     char* to = out.data();
@@ -105,18 +107,13 @@ DecodingInput::Status DecodingInput::read(std::string& out) {
     rawPos_ += consumed;
     rawOffset_ += consumed;
     out.resize(out.size() - outLeft);
-    if (!out.empty()) return Status::Data; // an invalid byte is reported on the next call
-    if (err == EILSEQ) {
+    if (!out.empty()) return Status::Data;   // an invalid byte is reported on the next call
+    if (err == EINVAL && refill()) continue; // a sequence cut by the end of the chunk
+    if (err != 0) {                          // EILSEQ, or a sequence cut by the end of the file
       invalidByte_ = static_cast<unsigned char>(raw_[rawPos_]);
       return Status::Invalid;
     }
-    // EINVAL: a sequence cut by the end of the chunk; read on, or it is cut by the end of file
-    if (err == EINVAL && !refill()) {
-      invalidByte_ = static_cast<unsigned char>(raw_[rawPos_]);
-      return Status::Invalid;
-    }
-    if (err != EINVAL && rawPos_ >= raw_.size() && !refill()) return Status::End;
-    out.resize(kChunk * kMaxGrowth);
+    if (!refill()) return Status::End; // all converted
   }
 }
 

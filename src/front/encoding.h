@@ -21,7 +21,7 @@ std::vector<std::string> encodingNames();
 /// memory does not grow with the file. UTF-8 input passes through without conversion.
 class DecodingInput {
 public:
-  enum class Status { Data, End, Invalid };
+  enum class Status { Data, End, Invalid, Unavailable };
 
   DecodingInput(std::istream& in, Encoding encoding);
   ~DecodingInput();
@@ -29,7 +29,8 @@ public:
   DecodingInput& operator=(const DecodingInput&) = delete;
 
   /// Replaces out with the next chunk. Invalid: the next input byte (invalidByte()) is not
-  /// valid in the encoding; every byte before it was handed out already.
+  /// valid in the encoding; every byte before it was handed out already. Unavailable: this
+  /// system's iconv cannot convert the encoding.
   Status read(std::string& out);
   unsigned char invalidByte() const { return invalidByte_; }
   bool sawAnyByte() const { return sawAnyByte_; }
@@ -49,6 +50,7 @@ private:
   std::uint64_t rawOffset_ = 0; // file offset of raw_[rawPos_]
   bool eof_ = false;
   bool sawAnyByte_ = false;
+  bool unavailable_ = false;
   unsigned char invalidByte_ = 0;
   std::vector<std::uint64_t> rawLineStarts_;
 };
