@@ -210,6 +210,8 @@ private:
   bool beforeMotion(const BlockWords& w);
   /// S, T and the M codes timed after the block's motion.
   bool afterMotion(const BlockWords& w);
+  /// S, T and the M codes of one phase, as the dialect times them.
+  bool auxiliary(const BlockWords& w, MTiming phase);
   /// Executes the block's M codes of one timing from the dialect's M table.
   bool mcodes(const BlockWords& w, MTiming timing);
   /// Target of the axis words in program coordinates (G90/G91, I operator, U/V/W, polar).
