@@ -139,6 +139,10 @@ public:
   void setModalCode(int group, int code10) {
     if (group > 0 && group < static_cast<int>(modalCodes_.size())) modalCodes_[group] = code10;
   }
+  /// Records the code as the one in force in its group (null: nothing).
+  void setModalCode(const GCodeSpec* g) {
+    if (g) setModalCode(g->group, g->code10);
+  }
   const Setup& setup() const { return setup_; }
   const Profile& profile() const { return profile_; }
   /// Active length offset (signed, mm) and the G92 / G52 shifts.
