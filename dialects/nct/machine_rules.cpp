@@ -54,6 +54,8 @@ std::vector<MCodeSpec> mcodes() {
 MachineRules machineRules() {
   MachineRules r;
   r.settings = settings();
+  r.parameterKeyPrefix = "N"; // G10 L52 records (nct-macro.md §9.1)
+  r.parameterKeyDigits = 4;
   r.mcodes = mcodes();
   r.speedTiming = r.toolTiming = MTiming::AfterMotion; // nct.md §2.2
   r.skipSense = SkipSense::SkipWhenOn;                 // nct.md §1.6

@@ -110,6 +110,10 @@ enum class ArcLMeaning : unsigned char {
 /// What the machine model follows for a dialect, beside its code tables.
 struct MachineRules {
   std::vector<SettingSpec> settings;
+  /// A data-entry parameter record's setup key: this prefix and the record's number written
+  /// with at least this many digits (NCT: "N" and four digits, docs/machine-model.md).
+  std::string parameterKeyPrefix;
+  int parameterKeyDigits = 1;
   std::vector<MCodeSpec> mcodes;
   MTiming speedTiming = MTiming::AfterMotion; // S (and G96's surface speed)
   MTiming toolTiming = MTiming::AfterMotion;  // T selects the next tool

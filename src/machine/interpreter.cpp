@@ -673,7 +673,9 @@ bool Interpreter::dataInput(const BlockWords& w, const ir::Block& dataBlock) {
     if (!dataBlock.sequence) return true;
     const ir::Word* r = dataBlock.find('R');
     if (!r || r->kind != ir::ValueKind::Number) return true;
-    std::string key = fmt::format("N{:04}", *dataBlock.sequence);
+    const MachineRules& rules = profile_.machine;
+    std::string key = fmt::format("{}{:0{}}", rules.parameterKeyPrefix, *dataBlock.sequence,
+                                  rules.parameterKeyDigits);
     if (const ir::Word* q = dataBlock.find('Q')) key += fmt::format(".{}", q->number);
     const double old = setup_.parameter(key, 0);
     setup_.parameters[key] = r->incremental ? old + r->number : r->number;
