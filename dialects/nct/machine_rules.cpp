@@ -54,11 +54,16 @@ std::vector<MCodeSpec> mcodes() {
 MachineRules machineRules() {
   MachineRules r;
   r.settings = settings();
+  r.parameterKeyPrefix = "N"; // G10 L52 records (nct-macro.md §9.1)
+  r.parameterKeyDigits = 4;
   r.mcodes = mcodes();
-  r.skipSense = SkipSense::SkipWhenOn; // nct.md §1.6
+  r.speedTiming = r.toolTiming = MTiming::AfterMotion; // nct.md §2.2
+  r.skipSense = SkipSense::SkipWhenOn;                 // nct.md §1.6
   r.dwell = {'P', 1, "G4 without P", 'X',
              "G4 takes P (seconds, or revolutions in G95); X is not defined in NCT (Q37)"};
-  r.arcL = ArcLMeaning::Turns;            // 000:1340
+  r.transform = {'R', 'P', "IJK", "G68 without R: angle 0 (nct.md Q18)",
+                 "G51 without P or I/J/K: scaling factor 1 (nct.md Q18)"}; // nct.md §3.15
+  r.arcL = ArcLMeaning::Turns;                                             // 000:1340
   r.lengthAlongPlaneNormal = false;       // N1416 ZAX=1: along Z (nct.md §3.16)
   r.surfaceSpeedAxis = 0;                 // nct.md §3.18: the radius is |X|
   r.setCoordinatesSIsSpindleLimit = true; // G92 S (nct.md §3.18)

@@ -90,6 +90,17 @@ struct DwellRule {
   const char* rejectedMessage = "";
 };
 
+/// The words of the programmable transformations (rotation, scaling).
+struct TransformWords {
+  char rotationAngle = 'R'; // the rotation's angle in degrees
+  char uniformScale = 'P';  // one factor for all axes (0: none)
+  /// Per-axis factors for X Y Z; when they are the axis words themselves, scaling has no
+  /// centre words and scales about the work system's origin.
+  std::string axisScale = "IJK";
+  const char* rotationWithoutAngle = ""; // warnings: the angle or the factors are missing
+  const char* scaleWithoutFactor = "";
+};
+
 /// The meaning of L in an arc block.
 enum class ArcLMeaning : unsigned char {
   Turns, // the number of started turns (a spiral or a multi-turn arc)
@@ -99,9 +110,16 @@ enum class ArcLMeaning : unsigned char {
 /// What the machine model follows for a dialect, beside its code tables.
 struct MachineRules {
   std::vector<SettingSpec> settings;
+  /// A data-entry parameter record's setup key: this prefix and the record's number written
+  /// with at least this many digits (NCT: "N" and four digits, docs/machine-model.md).
+  std::string parameterKeyPrefix;
+  int parameterKeyDigits = 1;
   std::vector<MCodeSpec> mcodes;
+  MTiming speedTiming = MTiming::AfterMotion; // S (and G96's surface speed)
+  MTiming toolTiming = MTiming::AfterMotion;  // T selects the next tool
   SkipSense skipSense = SkipSense::SkipWhenOn;
   DwellRule dwell;
+  TransformWords transform;
   ArcLMeaning arcL = ArcLMeaning::Turns;
   /// The tool length offset acts along the normal of the selected plane (else along Z).
   bool lengthAlongPlaneNormal = false;

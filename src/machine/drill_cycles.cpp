@@ -30,8 +30,8 @@ std::optional<cycles::DrillWord> drillWord(const ir::Word* w, double value, bool
 
 void Interpreter::cancelCycleMode() {
   state_.cycle = GAction::CycleCancel;
-  state_.returnToR = false; // G98 again (000:9456-9459)
-  if (modalCodes_.size() > 10) modalCodes_[10] = 980;
+  state_.returnToR = false;                               // G98 again (000:9456-9459)
+  setModalCode(codeOf(profile_, GAction::ReturnInitial)); // the return-level group's code
   cycles::cancel(cycles_->drill);
 }
 
@@ -187,8 +187,13 @@ bool Interpreter::runCycleOps(const std::vector<cycles::CycleOp>& ops, std::size
     case OpKind::OverrideLock: // G63 for #4015 until the code before it returns (§1.2)
     case OpKind::OverrideRestore: {
       const bool lock = op.kind == OpKind::OverrideLock;
-      if (lock) lockedFrom_ = modalCode(15);
-      modalCodes_[15] = lock ? 630 : lockedFrom_ ? lockedFrom_ : 640;
+      const GCodeSpec* tapping = codeOf(profile_, GAction::TappingMode);
+      const int group = tapping ? tapping->group : 0;
+      if (lock) lockedFrom_ = modalCode(group);
+      const GCodeSpec* continuous = codeOf(profile_, GAction::ContinuousMode);
+      setModalCode(group, lock          ? (tapping ? tapping->code10 : 0)
+                          : lockedFrom_ ? lockedFrom_
+                                        : (continuous ? continuous->code10 : 0));
       motion::Event e;
       e.kind = Kind::OverrideLock;
       e.start = e.end = machine_;

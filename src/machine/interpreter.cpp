@@ -513,26 +513,31 @@ bool Interpreter::transforms(const BlockWords& w) {
                   "(nct.md §3.15)");
     transforms_.cancel(Transforms::Kind::Scale);
   }
+  const TransformWords& words = profile_.machine.transform;
   if (const ir::Word* g = w.findAction(GAction::ScaleOn)) {
     Vec3 factors(1, 1, 1);
-    if (w.p) {
-      factors = Vec3::Constant(w.p->number);
+    std::array<const ir::Word*, 3> axisFactor{};
+    for (int a = 0; a < 3 && a < static_cast<int>(words.axisScale.size()); ++a)
+      axisFactor[a] = w.letter(words.axisScale[a]);
+    if (const ir::Word* u = words.uniformScale ? w.letter(words.uniformScale) : nullptr) {
+      factors = Vec3::Constant(u->number);
     } else {
       for (int a = 0; a < 3; ++a)
-        if (w.ijk[a]) factors[a] = w.ijk[a]->number;
-      if (!w.ijk[0] && !w.ijk[1] && !w.ijk[2])
-        diags_.warning(diag::code::MissingData, g->range,
-                       "G51 without P or I/J/K: scaling factor 1 (nct.md Q18)");
+        if (axisFactor[a]) factors[a] = axisFactor[a]->number;
+      if (!axisFactor[0] && !axisFactor[1] && !axisFactor[2])
+        diags_.warning(diag::code::MissingData, g->range, words.scaleWithoutFactor);
     }
-    transforms_.scale(centre(true), factors);
+    // factors given by the axis words leave no words for a centre: the work system's origin
+    const bool axisWordsAreFactors = words.axisScale == "XYZ";
+    transforms_.scale(axisWordsAreFactors ? Vec3::Zero() : centre(true), factors);
   }
   if (const ir::Word* g = w.findAction(GAction::RotateOn)) {
     double angle = 0;
-    if (w.r) {
-      angle = w.r->number;
-      if (state_.incremental || w.r->incremental) angle += transforms_.rotationDegrees();
+    if (const ir::Word* a = w.letter(words.rotationAngle)) {
+      angle = a->number;
+      if (state_.incremental || a->incremental) angle += transforms_.rotationDegrees();
     } else {
-      diags_.warning(diag::code::MissingData, g->range, "G68 without R: angle 0 (nct.md Q18)");
+      diags_.warning(diag::code::MissingData, g->range, words.rotationWithoutAngle);
     }
     transforms_.rotate(state_.plane, centre(false), angle);
   }
@@ -668,7 +673,9 @@ bool Interpreter::dataInput(const BlockWords& w, const ir::Block& dataBlock) {
     if (!dataBlock.sequence) return true;
     const ir::Word* r = dataBlock.find('R');
     if (!r || r->kind != ir::ValueKind::Number) return true;
-    std::string key = fmt::format("N{:04}", *dataBlock.sequence);
+    const MachineRules& rules = profile_.machine;
+    std::string key = fmt::format("{}{:0{}}", rules.parameterKeyPrefix, *dataBlock.sequence,
+                                  rules.parameterKeyDigits);
     if (const ir::Word* q = dataBlock.find('Q')) key += fmt::format(".{}", q->number);
     const double old = setup_.parameter(key, 0);
     setup_.parameters[key] = r->incremental ? old + r->number : r->number;
@@ -1001,18 +1008,22 @@ bool Interpreter::arcTo(const Vec3& end, const Vec3& centre, bool cw, int turns,
 }
 
 bool Interpreter::beforeMotion(const BlockWords& w) {
-  // M codes the dialect times before the motion of their block (none in NCT, nct.md §2.2)
-  return mcodes(w, MTiming::BeforeMotion);
+  return auxiliary(w, MTiming::BeforeMotion);
 }
 
 bool Interpreter::afterMotion(const BlockWords& w) {
-  // S and T act after the motion of their block, and the M codes timed so (nct.md §2.2)
-  if (w.t) state_.selectedTool = static_cast<int>(w.t->number);
+  return auxiliary(w, MTiming::AfterMotion);
+}
+
+bool Interpreter::auxiliary(const BlockWords& w, MTiming phase) {
+  // S, T and each M code act before or after the motion of their block as the dialect times
+  // them (NCT: all after, nct.md §2.2)
+  const MachineRules& rules = profile_.machine;
+  if (w.t && rules.toolTiming == phase) state_.selectedTool = static_cast<int>(w.t->number);
   bool spindleChanged = false;
   // S in a set-coordinates block may be the surface speed's clamp, not a speed (G92 S)
-  const bool clampOnly =
-      w.has(GAction::SetCoordinates) && profile_.machine.setCoordinatesSIsSpindleLimit;
-  if (w.s && !clampOnly) {
+  const bool clampOnly = w.has(GAction::SetCoordinates) && rules.setCoordinatesSIsSpindleLimit;
+  if (w.s && !clampOnly && rules.speedTiming == phase) {
     if (state_.surfaceSpeed)
       state_.surfaceSpeedValue = w.s->number;
     else
@@ -1020,8 +1031,8 @@ bool Interpreter::afterMotion(const BlockWords& w) {
     spindleChanged = true;
   }
   for (const ir::Word* m : w.m) {
-    const MCodeSpec* spec = profile_.machine.mcode(static_cast<int>(m->number));
-    if (!spec || spec->timing != MTiming::AfterMotion) continue;
+    const MCodeSpec* spec = rules.mcode(static_cast<int>(m->number));
+    if (!spec || spec->timing != phase) continue;
     if (spec->action == MAction::SpindleCW || spec->action == MAction::SpindleCCW ||
         spec->action == MAction::SpindleStop) {
       state_.spindleDirection = spec->action == MAction::SpindleCW    ? 1
@@ -1030,10 +1041,10 @@ bool Interpreter::afterMotion(const BlockWords& w) {
       spindleChanged = true;
     }
   }
-  if (state_.surfaceSpeed) {
+  if (phase == MTiming::AfterMotion && state_.surfaceSpeed) {
     // G96: rpm from the surface speed at the block's end point, the radius along the
     // dialect's radial axis of the work system (nct.md §3.18: rapid blocks use the end point)
-    const double radius = std::fabs(program_[profile_.machine.surfaceSpeedAxis]);
+    const double radius = std::fabs(program_[rules.surfaceSpeedAxis]);
     const double metresPerMinute =
         state_.inch ? state_.surfaceSpeedValue * 0.3048 : state_.surfaceSpeedValue;
     double rpm = state_.maxSpindleSpeed;
@@ -1048,7 +1059,7 @@ bool Interpreter::afterMotion(const BlockWords& w) {
     }
   }
   if (spindleChanged) emitSpindle();
-  return mcodes(w, MTiming::AfterMotion);
+  return mcodes(w, phase);
 }
 
 bool Interpreter::mcodes(const BlockWords& w, MTiming timing) {
@@ -1070,12 +1081,7 @@ bool Interpreter::mcodes(const BlockWords& w, MTiming timing) {
     case MAction::SpindleCW:
     case MAction::SpindleCCW:
     case MAction::SpindleStop:
-      if (timing == MTiming::AfterMotion) continue; // afterMotion() set the direction
-      state_.spindleDirection = spec->action == MAction::SpindleCW    ? 1
-                                : spec->action == MAction::SpindleCCW ? -1
-                                                                      : 0;
-      emitSpindle();
-      continue;
+      continue; // auxiliary() set the direction with the speed: one spindle event
     case MAction::SpindleOrient:
       e.kind = Kind::SpindleOrient;
       break;

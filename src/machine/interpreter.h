@@ -139,6 +139,10 @@ public:
   void setModalCode(int group, int code10) {
     if (group > 0 && group < static_cast<int>(modalCodes_.size())) modalCodes_[group] = code10;
   }
+  /// Records the code as the one in force in its group (null: nothing).
+  void setModalCode(const GCodeSpec* g) {
+    if (g) setModalCode(g->group, g->code10);
+  }
   const Setup& setup() const { return setup_; }
   const Profile& profile() const { return profile_; }
   /// Active length offset (signed, mm) and the G92 / G52 shifts.
@@ -210,6 +214,8 @@ private:
   bool beforeMotion(const BlockWords& w);
   /// S, T and the M codes timed after the block's motion.
   bool afterMotion(const BlockWords& w);
+  /// S, T and the M codes of one phase, as the dialect times them.
+  bool auxiliary(const BlockWords& w, MTiming phase);
   /// Executes the block's M codes of one timing from the dialect's M table.
   bool mcodes(const BlockWords& w, MTiming timing);
   /// Target of the axis words in program coordinates (G90/G91, I operator, U/V/W, polar).

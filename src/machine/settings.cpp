@@ -19,6 +19,12 @@ const char* settingKey(const Profile& profile, Setting which) {
   return s ? s->key : nullptr;
 }
 
+const GCodeSpec* codeOf(const Profile& profile, GAction action) {
+  for (const GCodeSpec& g : profile.gcodes)
+    if (g.action == action) return &g;
+  return nullptr;
+}
+
 cycles::DrillConfig drillConfig(const Profile& profile, const Setup& setup) {
   const cycles::DrillConfig d;
   auto value = [&](Setting s, double fallback) { return setting(profile, setup, s, fallback); };

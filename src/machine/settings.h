@@ -14,6 +14,8 @@ double setting(const Profile& profile, const Setup& setup, Setting which, double
 const char* settingLabel(const Profile& profile, Setting which);
 /// The setup key of the setting, or null.
 const char* settingKey(const Profile& profile, Setting which);
+/// The dialect's first G code with this action (its group and code), or null.
+const GCodeSpec* codeOf(const Profile& profile, GAction action);
 /// The drilling cycles' machine settings (cycles.md §2.8).
 cycles::DrillConfig drillConfig(const Profile& profile, const Setup& setup);
 

@@ -135,6 +135,21 @@ TEST(MachineRules, MCodesActByTheirTableEntryAndTiming) {
   EXPECT_EQ(run(noCoolant, "G0 X10 M8\n"), (Lines{"R 10,0,0", "END"})); // a warning only
 }
 
+TEST(MachineRules, SpeedToolAndSpindleCodesBeforeTheMotion) {
+  const std::string text = "G1 X10 F100 S500 M3 T2\nM6\n";
+  EXPECT_EQ(run(nct::profile(), text), (Lines{"L 10,0,0 F100", "EV S500 M3", "EV T2 M6", "END"}));
+  // FMS-3000 (fms3000.md §1.4): S, T and M03/M04 before the motion, M05 after it
+  const Profile fms = nctWith([](MachineRules& r) {
+    r.speedTiming = r.toolTiming = MTiming::BeforeMotion;
+    for (MCodeSpec& m : r.mcodes)
+      if (m.code == 3 || m.code == 4) m.timing = MTiming::BeforeMotion;
+  });
+  EXPECT_EQ(run(fms, text), (Lines{"EV S500 M3", "L 10,0,0 F100", "EV T2 M6", "END"}));
+  // the speed before the move, the stop after it
+  EXPECT_EQ(run(fms, "G1 X10 F100 S500 M5\n"),
+            (Lines{"EV S500 M5", "L 10,0,0 F100", "EV S500 M5", "END"}));
+}
+
 TEST(MachineRules, SurfaceSpeedRadiusAxisAndSpindleLimitWord) {
   const std::string text = "G92 S1000\nG96 S100\nG0 X20 Z10 M3\n";
   // NCT: at X0 the limit G92 S1000; at X20 100 m/min / (2 pi 0.02 m) = 795.7747 rpm
@@ -174,6 +189,20 @@ TEST(MachineRules, ArcLIsTurnsOnlyWhereTheDialectSaysSo) {
   EXPECT_EQ(run(nct::profile(), text), (Lines{"R 10,0,0", "CCW 10,0,0 C0,0 r10 θ720", "END"}));
   const Profile wl4 = nctWith([](MachineRules& r) { r.arcL = ArcLMeaning::None; });
   EXPECT_EQ(run(wl4, text), (Lines{"R 10,0,0", "CCW 10,0,0 C0,0 r10 θ360", "END"}));
+}
+
+TEST(MachineRules, TransformWordsComeFromTheProfile) {
+  const std::string nctText = "G17 G90 G68 X0 Y0 R90\nG1 X10 F100\nG69\nG51 X0 Y0 P2\nG1 X5 Y1\n";
+  EXPECT_EQ(run(nct::profile(), nctText), (Lines{"L 0,10,0 F100", "L 10,2,0 F100", "END"}));
+  // FMS-3000 (fms3000.md §3.12, §3.13): the angle is A; the axis words are the factors and the
+  // centre is the work system's origin
+  const Profile fms = nctWith([](MachineRules& r) {
+    r.transform = {'A', 0, "XYZ", "G37 without A", "G69 without factors"};
+  });
+  const std::string fmsText = "G17 G90 G68 X0 Y0 A90\nG1 X10 F100\nG69\nG51 X2 Y3\nG1 X5 Y1\n";
+  EXPECT_EQ(run(fms, fmsText), (Lines{"L 0,10,0 F100", "L 10,3,0 F100", "END"}));
+  // under NCT's words the same blocks rotate by 0 (no R) and scale by 1 about X2 Y3
+  EXPECT_EQ(run(nct::profile(), fmsText), (Lines{"L 10,0,0 F100", "L 5,1,0 F100", "END"}));
 }
 
 TEST(MachineRules, WorkOffsetNamesComeFromTheProfile) {
