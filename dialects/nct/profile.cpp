@@ -1,9 +1,12 @@
 #include "dialects/nct/profile.h"
 
+#include "cycles/drilling_state.h"
+#include "cycles/pocket.h"
+#include "cycles/turning_state.h"
 #include "diag/diagnostic.h"
 #include "dialects/nct/arguments.h"
 #include "dialects/nct/control_flow.h"
-#include "passes/cycles/pocket.h"
+#include "dialects/nct/machine_rules.h"
 
 namespace gcx::nct {
 
@@ -57,8 +60,13 @@ Profile build() {
       AddressSpec{"AX", true, true, true, -1e300, 1e300, true, "axis given by its number"},
       AddressSpec{"<>", false, false, false, 0, 0, false, "program file of M98 / G65"},
   };
-  // nct.md §2.1 (000:490-905) with the groups of nct-macro.md §2.9.4 (000:12690-12800).
+  // nct.md §2.1 (000:490-905) with the groups of nct-macro.md §2.9.4 (000:12690-12800). A
+  // cycle code's arg names the cycle of the cycles library it runs (cycles.md §2.1, §4).
   using A = GAction;
+  using D = cycles::DrillCycle;
+  using T = cycles::TurningCycle;
+  auto drill = [](D c) { return static_cast<int>(c); };
+  auto turning = [](T c) { return static_cast<int>(c); };
   p.gcodes = {
       {0, 1, "rapid positioning", A::Rapid},
       {10, 1, "linear interpolation", A::Linear},
@@ -132,31 +140,31 @@ Profile build() {
       {681, 18, "3-D rotation"},
       {682, 18, "tilted working plane"},
       {691, 18, "3-D rotation off", A::Modeless},
-      {707, 0, "finishing cycle", A::TurningCycle},
-      {717, 0, "stock removal in turning", A::TurningCycle},
-      {727, 0, "stock removal in facing", A::TurningCycle},
-      {737, 0, "pattern repeating", A::TurningCycle},
-      {747, 0, "end face peck drilling", A::TurningCycle},
-      {757, 0, "outer/inner diameter drilling", A::TurningCycle},
-      {767, 0, "multiple thread cutting", A::TurningCycle},
-      {777, 1, "turning cycle", A::TurningCycle},
-      {787, 1, "thread cutting cycle", A::TurningCycle},
-      {797, 1, "facing cycle", A::TurningCycle},
-      {730, 9, "peck drilling", A::DrillCycle},
-      {740, 9, "counter tapping", A::DrillCycle},
-      {760, 9, "fine boring", A::DrillCycle},
+      {707, 0, "finishing cycle", A::TurningCycle, turning(T::G70)},
+      {717, 0, "stock removal in turning", A::TurningCycle, turning(T::G71)},
+      {727, 0, "stock removal in facing", A::TurningCycle, turning(T::G72)},
+      {737, 0, "pattern repeating", A::TurningCycle, turning(T::G73)},
+      {747, 0, "end face peck drilling", A::TurningCycle, turning(T::G74)},
+      {757, 0, "outer/inner diameter drilling", A::TurningCycle, turning(T::G75)},
+      {767, 0, "multiple thread cutting", A::TurningCycle, turning(T::G76)},
+      {777, 1, "turning cycle", A::TurningCycle, turning(T::G77)},
+      {787, 1, "thread cutting cycle", A::TurningCycle, turning(T::G78)},
+      {797, 1, "facing cycle", A::TurningCycle, turning(T::G79)},
+      {730, 9, "peck drilling", A::DrillCycle, drill(D::G73)},
+      {740, 9, "counter tapping", A::DrillCycle, drill(D::G74)},
+      {760, 9, "fine boring", A::DrillCycle, drill(D::G76)},
       {800, 9, "cycle cancel", A::CycleCancel},
-      {810, 9, "drilling", A::DrillCycle},
-      {820, 9, "counter boring", A::DrillCycle},
-      {830, 9, "peck drilling", A::DrillCycle},
-      {840, 9, "tapping", A::DrillCycle},
-      {842, 9, "rigid tapping", A::DrillCycle},
-      {843, 9, "rigid counter tapping", A::DrillCycle},
-      {850, 9, "boring", A::DrillCycle},
-      {860, 9, "boring", A::DrillCycle},
-      {870, 9, "back boring", A::DrillCycle},
-      {880, 9, "boring", A::DrillCycle},
-      {890, 9, "boring", A::DrillCycle},
+      {810, 9, "drilling", A::DrillCycle, drill(D::G81)},
+      {820, 9, "counter boring", A::DrillCycle, drill(D::G82)},
+      {830, 9, "peck drilling", A::DrillCycle, drill(D::G83)},
+      {840, 9, "tapping", A::DrillCycle, drill(D::G84)},
+      {842, 9, "rigid tapping", A::DrillCycle, drill(D::G84_2)},
+      {843, 9, "rigid counter tapping", A::DrillCycle, drill(D::G84_3)},
+      {850, 9, "boring", A::DrillCycle, drill(D::G85)},
+      {860, 9, "boring", A::DrillCycle, drill(D::G86)},
+      {870, 9, "back boring", A::DrillCycle, drill(D::G87)},
+      {880, 9, "boring", A::DrillCycle, drill(D::G88)},
+      {890, 9, "boring", A::DrillCycle, drill(D::G89)},
       {808, 34, "electronic gear box off", A::Modeless},
       {818, 34, "electronic gear box on"},
       {900, 3, "absolute", A::Absolute},
@@ -172,9 +180,8 @@ Profile build() {
   // nct.md §0.2 reference profile and §2.1 defaults (N1300/N1301 all 0, Q12 for G23)
   p.powerOnGCodes10 = {0,   170, 210, 900, 940, 400, 490, 540, 670, 800,
                        640, 980, 150, 500, 501, 690, 970, 131, 230};
-  p.spindleOrientMCodes = {19};
-  p.uvwIncremental = true;             // nct.md §1.4
-  p.arcRadiusTolerance = 0.01;         // N1339 Radius Diff (000:1340)
+  p.uvwIncremental = true; // nct.md §1.4
+  p.machine = machineRules();
   p.exclusiveMCodes = {3, 4, 5, 19};   // one spindle command per block (000:4278-4280)
   p.dataModeLCodes = {52, 75, 76, 77}; // G10 L52 parameters, L75-77 tool tables (nct.md §1.10)
   p.macroCallGCodes10 = {650, 660, 661};

@@ -105,7 +105,7 @@ void StaticChecker::words(const ir::Block& b) {
       if (!w.isLiteral()) continue;
       const GCodeSpec* g = profile_.gcode(w.number);
       if (!g) {
-        // a parameter-defined macro call (N1704...) is legal; only the machine setup knows
+        // a macro call defined by a machine setting is legal; only the machine setup knows
         diags_.warning(diag::code::UnknownGCode, w.range,
                        fmt::format("G{} is not in the G-code table; it must be configured as a "
                                    "macro call",

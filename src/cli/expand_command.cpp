@@ -5,9 +5,9 @@
 
 #include "cli/commands.h"
 #include "cli/execute.h"
+#include "cycles/kept_contours.h"
 #include "dialects/nct/printer.h"
 #include "emit/canonical.h"
-#include "passes/cycles/kept_contours.h"
 #include "passes/macro/expander.h"
 
 namespace gcx::cli {

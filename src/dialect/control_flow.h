@@ -151,7 +151,7 @@ struct CallSite {
   std::function<bool(const ir::Word&)> vacant;
 };
 
-/// A code the machine's parameters turn into a call (NCT N1704-N1754, nct-macro.md §5.8).
+/// A code the machine's parameters turn into a call (NCT: nct-macro.md §5.8).
 struct ConfiguredCall {
   enum Kind : unsigned char { MacroG, ModalG, MacroM, SubprogramM, SubprogramLetter } kind;
   std::string unit; // the program called
@@ -181,9 +181,9 @@ struct ControlFlow {
       configuredCall;
   /// A common variable protected against writes: the message to report, nullopt if writable.
   std::function<std::optional<std::string>(int number, const ParameterLookup&)> writeProtected;
-  /// The setup parameter key of PRM[id, bit] (NCT "N1702", "N1757.0").
+  /// The setup parameter key of PRM[id, bit] (NCT: "N" + four digits, ".bit").
   std::function<std::string(int id, std::optional<int> bit)> parameterKey;
-  /// DPRNT leaves out the '+' sign and leading zeros (NCT N1757 PNT).
+  /// DPRNT leaves out the '+' sign and leading zeros (an NCT parameter bit).
   std::function<bool(const ParameterLookup&)> printOmitsSign;
 
   /// The file names, in search order, that may hold program `unit` called from a file with

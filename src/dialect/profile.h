@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "dialect/machine_rules.h"
+
 namespace gcx {
 
 namespace ir {
@@ -146,13 +148,12 @@ struct Profile {
   std::vector<int> exclusiveMCodes; // at most one of these per block (spindle M3 M4 M5 M19)
   int maxSignificantDigits = 15;
   int maxSkipLevel = 9;
-  int documentedSkipLevel = 8;          // levels above it are accepted with a warning
-  std::vector<int> dataModeLCodes;      // G10 L<n> starts a data-entry section ended by G11
-  std::vector<int> macroCallGCodes10;   // G65, G66, G66.1: every other letter is an argument
-  std::vector<int> powerOnGCodes10;     // modal state at power-on and after reset
-  std::vector<int> spindleOrientMCodes; // M19
-  bool uvwIncremental = false;          // U V W are incremental X Y Z when not axes
-  double arcRadiusTolerance = 0.01;     // |r_end - r_start| accepted (as a spiral) without alarm
+  int documentedSkipLevel = 8;        // levels above it are accepted with a warning
+  std::vector<int> dataModeLCodes;    // G10 L<n> starts a data-entry section ended by G11
+  std::vector<int> macroCallGCodes10; // G65, G66, G66.1: every other letter is an argument
+  std::vector<int> powerOnGCodes10;   // modal state at power-on and after reset
+  bool uvwIncremental = false;        // U V W are incremental X Y Z when not axes
+  MachineRules machine;               // word roles, M codes, settings (machine_rules.h)
   /// Static check of a macro call block's arguments (the dialect's argument specification).
   std::function<void(const ir::Block&, diag::Engine&)> checkCallArguments;
   /// System cycles written as macro programs, by program number (NCT: 9999, cycles.md §5).

@@ -24,7 +24,9 @@ const ir::Word* sortWords(const ir::Block& b, const Profile& profile, BlockWords
       out.other.push_back(&w);
       continue;
     }
-    switch (w.address[0]) {
+    const char letter = w.address[0];
+    if (letter >= 'A' && letter <= 'Z') out.letters[letter - 'A'] = &w;
+    switch (letter) {
     case 'G':
       out.gWords.push_back(&w);
       out.gCodes.push_back(profile.gcode(w.number));
@@ -39,13 +41,9 @@ const ir::Word* sortWords(const ir::Block& b, const Profile& profile, BlockWords
       out.axis[2] = &w;
       break;
     case 'U':
-      out.uvw[0] = &w;
-      break;
     case 'V':
-      out.uvw[1] = &w;
-      break;
-    case 'W':
-      out.uvw[2] = &w;
+    case 'W': // incremental X Y Z where the dialect says so, else axes of their own
+      (profile.uvwIncremental ? out.uvw[letter - 'U'] : out.extra[3 + letter - 'U']) = &w;
       break;
     case 'A':
       out.extra[0] = &w;

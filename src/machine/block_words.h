@@ -19,7 +19,11 @@ struct BlockWords {
   const ir::Word *r = nullptr, *f = nullptr, *s = nullptr, *t = nullptr, *h = nullptr, *d = nullptr,
                  *p = nullptr, *q = nullptr, *l = nullptr, *e = nullptr;
   std::vector<const ir::Word*> m;
-  std::vector<const ir::Word*> other; // rotary axes, ,C ,R ,A, AX, <file>, O, N words
+  std::vector<const ir::Word*> other;        // rotary axes, ,C ,R ,A, AX, <file>, O, N words
+  std::array<const ir::Word*, 26> letters{}; // every single-letter word by its letter
+
+  /// The word of a letter as written (null if none): for rules the profile gives by letter.
+  const ir::Word* letter(char c) const { return c >= 'A' && c <= 'Z' ? letters[c - 'A'] : nullptr; }
 
   bool hasAxisWord() const;
   /// The G code of this block with the given action, or null.

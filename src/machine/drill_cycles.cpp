@@ -1,13 +1,16 @@
 // The interpreter's side of the drilling cycles (cycles.md §2-§3): which block drills, where
-// its holes are, and how the ops of passes/cycles/drilling.h become motion. What a cycle does
+// its holes are, and how the ops of cycles/drilling.h become motion. What a cycle does
 // is the cycles library's; here are only the machine's positions, transforms and events.
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
 
+#include "cycles/drilling.h"
 #include "diag/codes.h"
+#include "machine/cycle_state.h"
 #include "machine/interpreter.h"
+#include "machine/settings.h"
 #include "motion/geometry.h"
 
 namespace gcx::machine {
@@ -29,7 +32,7 @@ void Interpreter::cancelCycleMode() {
   state_.cycle = GAction::CycleCancel;
   state_.returnToR = false; // G98 again (000:9456-9459)
   if (modalCodes_.size() > 10) modalCodes_[10] = 980;
-  cycles::cancel(drill_);
+  cycles::cancel(cycles_->drill);
 }
 
 bool Interpreter::drillBlock(const BlockWords& w, bool consumedAxes) {
@@ -38,14 +41,14 @@ bool Interpreter::drillBlock(const BlockWords& w, bool consumedAxes) {
   if (consumedAxes) return afterMotion(w);
   const motion::PlaneAxes ax = motion::axesOf(state_.plane);
   const int n = ax.normal;
-  // A parallel axis (W in G17, N0103) programmed in the block becomes the drilling axis
+  // A parallel axis (W in G17, a setting) programmed in the block becomes the drilling axis
   // (000:9496-9501); otherwise the axis stays the one cycle mode drills along.
   const ir::Word* parallelWord = (parallelAxes_ >> n) & 1u ? w.extra[3 + n] : nullptr;
   const bool mainWord = w.axis[n] || w.uvw[n];
   int slot = n;
   if (parallelWord)
     slot = 3 + n;
-  else if (!mainWord && drill_.cycle && drill_.axis == 3 + n)
+  else if (!mainWord && cycles_->drill.cycle && cycles_->drill.axis == 3 + n)
     slot = 3 + n;
   auto slotValue = [&](int s) { return s >= 3 ? extra_[s] : program_[s]; };
 
@@ -53,7 +56,7 @@ bool Interpreter::drillBlock(const BlockWords& w, bool consumedAxes) {
   dw.range = blockRange_;
   for (std::size_t i = 0; i < w.gWords.size(); ++i)
     if (w.gCodes[i] && w.gCodes[i]->action == GAction::DrillCycle)
-      dw.code = cycles::drillCycleFromCode10(w.gCodes[i]->code10);
+      dw.code = static_cast<cycles::DrillCycle>(w.gCodes[i]->arg); // the profile's binding
   dw.axis = slot;
   dw.axisPosition = slotValue(slot);
   dw.holeWord = w.hasAxisWord();
@@ -70,11 +73,11 @@ bool Interpreter::drillBlock(const BlockWords& w, bool consumedAxes) {
   dw.vars.overridePercent = drillWord(w.ijk[0], w.ijk[0] ? w.ijk[0]->number : 0, false);
   dw.l = drillWord(w.l, w.l ? w.l->number : 0, false);
 
-  const std::optional<long> holes = cycles::updateModal(drill_, dw, diags_);
+  const std::optional<long> holes = cycles::updateModal(cycles_->drill, dw, diags_);
   if (!holes) return false;
   if (*holes == 0) return afterMotion(w); // data stored; M S T still execute (000:10348-10350)
 
-  const cycles::DrillConfig config = cycles::drillConfig(setup_);
+  const cycles::DrillConfig config = drillConfig(profile_, setup_);
   // §2.7: Q and E keep their size under scaling; the I J K shift is not transformed
   const Eigen::Matrix3d m = transforms_.matrix().linear();
   Eigen::Matrix2d inPlane;
@@ -82,15 +85,15 @@ bool Interpreter::drillBlock(const BlockWords& w, bool consumedAxes) {
       m(ax.second, ax.second);
   for (long i = 1; i <= *holes; ++i) {
     cycles::DrillRequest req;
-    req.cycle = *drill_.cycle;
+    req.cycle = *cycles_->drill.cycle;
     req.ret = state_.returnToR ? cycles::DrillReturn::RLevel : cycles::DrillReturn::Initial;
     req.plane = state_.plane;
     req.position = program_;
     req.position[n] = slotValue(slot);
     // each repetition applies the block's increments again from the last hole (000:9647-9660)
     req.hole = target(w, true);
-    req.initial = *drill_.initial;
-    req.vars = drill_.vars;
+    req.initial = *cycles_->drill.initial;
+    req.vars = cycles_->drill.vars;
     req.feed = state_.feed;
     req.spindleSpeed = state_.spindleSpeed;
     req.spindleDirection = state_.spindleDirection;

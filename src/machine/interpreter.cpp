@@ -1,10 +1,12 @@
 #include "machine/interpreter.h"
+#include "machine/cycle_state.h"
 
 #include <cmath>
 #include <fmt/format.h>
 
 #include "diag/codes.h"
 #include "emit/number.h"
+#include "machine/settings.h"
 #include "motion/geometry.h"
 #include "motion/interpolator.h"
 
@@ -19,22 +21,27 @@ std::string gName(const ir::Word& w) {
   return std::string("G").append(emit::formatNumber(w.number));
 }
 
+/// The i-th of consecutive settings (X Y Z, or U V W).
+Setting nth(Setting first, int i) {
+  return static_cast<Setting>(static_cast<int>(first) + i);
+}
+
 } // namespace
 
 Interpreter::Interpreter(const Profile& profile, const Setup& setup, motion::Sink& sink,
                          diag::Engine& diags)
     : profile_(profile), setup_(setup), sink_(&sink), diags_(diags) {
-  radiusTolerance_ = setup_.parameter("N1339", profile_.arcRadiusTolerance);
+  radiusTolerance_ = setting(profile_, setup_, Setting::ArcRadiusTolerance, 0.01);
   const auto& p = setup_.initialPosition;
   machine_ = Vec3(p[0], p[1], p[2]);
   const auto c = setup_.workOffset("common");
   offsets_.common = Vec3(c[0], c[1], c[2]);
   for (int i = 0; i < 3; ++i)
-    if (setup_.parameter(std::string("N0103.") + "UVW"[i], 0) == 1) parallelAxes_ |= 1u << i;
-  rollover_.enabled = setup_.parameter("N0107.REN", 0) == 1;
-  rollover_.absoluteBySign = setup_.parameter("N0107.ABS", 0) == 1;
-  rollover_.shortest = setup_.parameter("N0107.ASH", 0) == 1;
-  rollover_.amount = setup_.parameter("N0108", 360);
+    if (setting(profile_, setup_, nth(Setting::ParallelAxisU, i)) == 1) parallelAxes_ |= 1u << i;
+  rollover_.enabled = setting(profile_, setup_, Setting::RolloverOn) == 1;
+  rollover_.absoluteBySign = setting(profile_, setup_, Setting::RolloverBySign) == 1;
+  rollover_.shortest = setting(profile_, setup_, Setting::RolloverShortest) == 1;
+  rollover_.amount = setting(profile_, setup_, Setting::RolloverAmount, 360);
   resetModal();
   reexpress();
 }
@@ -52,7 +59,7 @@ void Interpreter::resetModal() {
   const double speed = state_.spindleSpeed, feed = state_.feed;
   const int direction = state_.spindleDirection;
   state_ = ModalState{};
-  cycles::cancel(drill_);
+  cycles::cancel(cycles_->drill);
   state_.tool = tool, state_.selectedTool = selected;
   state_.spindleSpeed = speed, state_.spindleDirection = direction, state_.feed = feed;
   modalCodes_.fill(0);
@@ -64,8 +71,7 @@ void Interpreter::resetModal() {
           modalCodes_[g.group] = g.code10;
       }
   for (int a = 0; a < 3; ++a)
-    if (setup_.parameter(std::string("N0106.DIA") + "XYZ"[a], 0) == 1)
-      state_.diameterAxes |= 1u << a;
+    if (setting(profile_, setup_, nth(Setting::DiameterX, a)) == 1) state_.diameterAxes |= 1u << a;
   offsets_.g92 = offsets_.g52 = Vec3::Zero();
   offsets_.length = 0;
   offsets_.turning = Vec3::Zero();
@@ -110,17 +116,34 @@ void Interpreter::setWorkRotation(const std::string& key, int plane, double degr
   if (plane >= 1 && plane <= 3) rotations_[key][plane - 1] = degrees;
 }
 
+std::string Interpreter::workOffsetKey(int offset) const {
+  const MachineRules& r = profile_.machine;
+  if (offset > 100) return r.extendedWorkOffsetPrefix + std::to_string(offset - 100);
+  const auto i = static_cast<std::size_t>(offset - 1);
+  return i < r.workOffsetNames.size() ? r.workOffsetNames[i] : std::string();
+}
+
 Vec3 Interpreter::currentWorkOffset() const {
-  const std::string key = state_.workOffset > 100
-                              ? fmt::format("G54.1 P{}", state_.workOffset - 100)
-                              : fmt::format("G{}", 53 + state_.workOffset);
-  const auto o = setup_.workOffset(key);
+  const auto o = setup_.workOffset(workOffsetKey(state_.workOffset));
   return Vec3(o[0], o[1], o[2]);
 }
 
 Vec3 Interpreter::workOrigin() const {
-  return offsets_.common + currentWorkOffset() + offsets_.g92 + offsets_.g52 +
-         Vec3(0, 0, offsets_.length) + offsets_.turning;
+  return offsets_.common + currentWorkOffset() + offsets_.g92 + offsets_.g52 + lengthVector() +
+         offsets_.turning;
+}
+
+Vec3 Interpreter::lengthVector() const {
+  Vec3 v = Vec3::Zero();
+  v[profile_.machine.lengthAlongPlaneNormal ? motion::axesOf(state_.plane).normal : 2] =
+      offsets_.length;
+  return v;
+}
+
+bool Interpreter::skips(int level) const {
+  if (!level) return false;
+  const bool on = setup_.blockSkip.count(level) != 0;
+  return profile_.machine.skipSense == SkipSense::SkipWhenOn ? on : !on; // nct.md §1.6
 }
 
 Vec3 Interpreter::toMachine(const Vec3& program) const {
@@ -223,7 +246,7 @@ bool Interpreter::execute(const ir::Block& block, const motion::Provenance& from
 
 bool Interpreter::executeBlock(const ir::Block& block) {
   if (block.kind == ir::BlockKind::ProgramStart) return true;
-  if (block.skipLevel && setup_.blockSkip.count(block.skipLevel)) return true; // nct.md §1.6
+  if (skips(block.skipLevel)) return true;
   if (block.kind == ir::BlockKind::Data) return dataInput(BlockWords{}, block);
   if (!block.stmts.empty())
     return fail(diag::code::NotImplemented, block.stmts.front().range,
@@ -253,12 +276,10 @@ bool Interpreter::executeBlock(const ir::Block& block) {
   for (const ir::Word* o : w.other)
     if (o->is('O')) state_.lastO = static_cast<int>(o->number);
   const ModalState before = state_;
-  pendingTurning_ = 0;
+  pendingTurning_ = nullptr;
   if (!applyModal(w)) return false;
   if (w.hasAxisWord() && !w.has(GAction::DataInput)) {
-    const std::string key = state_.workOffset > 100
-                                ? fmt::format("G54.1 P{}", state_.workOffset - 100)
-                                : fmt::format("G{}", 53 + state_.workOffset);
+    const std::string key = workOffsetKey(state_.workOffset);
     for (int plane = 1; plane <= 3; ++plane)
       if (workRotation(key, plane) != 0)
         return fail(diag::code::NotImplemented, blockRange_,
@@ -270,6 +291,7 @@ bool Interpreter::executeBlock(const ir::Block& block) {
   emitModalChanges(before);
   bool consumed = false;
   if (!applyNonMotion(w, consumed)) return false;
+  if (!beforeMotion(w)) return false;
   if (state_.cycle == GAction::DrillCycle && !deferCycles_) return drillBlock(w, consumed);
   if (pendingTurning_) return turningBlock(w);
   const bool arcWithCentreOnly =
@@ -407,12 +429,12 @@ bool Interpreter::applyModal(const BlockWords& w) {
     case GAction::TurningCycle:
       if (deferCycles_) break;
       if (g->group == 0) { // one-shot: turningBlock() runs it
-        pendingTurning_ = g->code10;
+        pendingTurning_ = g;
         break;
       }
       // G77.7-G79.7 hold group 1: every block with axis words repeats the cycle (§4.1)
       state_.motion = GAction::TurningCycle;
-      turningMode_ = g->code10;
+      turningMode_ = g;
       turningEnd_.reset();
       turningTaper_.reset();
       if (state_.cycle == GAction::DrillCycle) cancelCycleMode();
@@ -522,11 +544,12 @@ bool Interpreter::applyNonMotion(const BlockWords& w, bool& consumed) {
              w.has(GAction::MirrorOff);
   if (const ir::Word* g = w.findAction(GAction::Dwell)) {
     consumed = true;
-    if (w.axis[0])
-      return fail(diag::code::DwellWithoutP, w.axis[0]->range,
-                  "G4 takes P (seconds, or revolutions in G95); X is not defined in NCT (Q37)");
-    if (!w.p) return fail(diag::code::MissingData, g->range, "G4 without P");
-    emitDwell(w.p->number);
+    const DwellRule& dwell = profile_.machine.dwell;
+    if (const ir::Word* x = dwell.rejectedWord ? w.letter(dwell.rejectedWord) : nullptr)
+      return fail(diag::code::DwellWithoutP, x->range, dwell.rejectedMessage);
+    const ir::Word* time = w.letter(dwell.word);
+    if (!time) return fail(diag::code::MissingData, g->range, dwell.missingMessage);
+    emitDwell(time->number * dwell.secondsPerUnit);
   }
   if (w.has(GAction::DataInput)) {
     consumed = true;
@@ -549,7 +572,7 @@ bool Interpreter::applyNonMotion(const BlockWords& w, bool& consumed) {
   }
   if (w.has(GAction::SetCoordinates)) {
     consumed = true;
-    if (w.s) { // G92 S: spindle speed limit of constant surface speed (nct.md §3.18)
+    if (w.s && profile_.machine.setCoordinatesSIsSpindleLimit) { // nct.md §3.18
       if (w.hasAxisWord())
         return fail(diag::code::ForbiddenAddress, w.s->range,
                     "G92 S (spindle limit) and G92 coordinates in one block (nct.md Q28)");
@@ -582,8 +605,8 @@ bool Interpreter::applyNonMotion(const BlockWords& w, bool& consumed) {
 
 bool Interpreter::setCoordinates(const BlockWords& w) {
   // the current tool tip gets the coordinates v in every work system (nct.md §3.14)
-  const Vec3 local = machine_ - offsets_.common - currentWorkOffset() -
-                     Vec3(0, 0, offsets_.length) - offsets_.turning;
+  const Vec3 local =
+      machine_ - offsets_.common - currentWorkOffset() - lengthVector() - offsets_.turning;
   for (int a = 0; a < 3; ++a) {
     if (w.uvw[a])
       return fail(diag::code::IllegalIncremental, w.uvw[a]->range,
@@ -649,12 +672,14 @@ bool Interpreter::dataInput(const BlockWords& w, const ir::Block& dataBlock) {
     if (const ir::Word* q = dataBlock.find('Q')) key += fmt::format(".{}", q->number);
     const double old = setup_.parameter(key, 0);
     setup_.parameters[key] = r->incremental ? old + r->number : r->number;
-    if (key == "N1339") radiusTolerance_ = setup_.parameters[key];
+    if (const char* tolerance = settingKey(profile_, Setting::ArcRadiusTolerance))
+      if (key == tolerance) radiusTolerance_ = setup_.parameters[key];
     return true;
   }
   const ir::Word* g = w.findAction(GAction::DataInput);
   const int l = w.l ? static_cast<int>(w.l->number) : -1;
-  if (l == 52 || l == 75 || l == 76 || l == 77) {
+  if (std::find(profile_.dataModeLCodes.begin(), profile_.dataModeLCodes.end(), l) !=
+      profile_.dataModeLCodes.end()) {
     dataMode_ = true;
     return true;
   }
@@ -665,10 +690,10 @@ bool Interpreter::dataInput(const BlockWords& w, const ir::Block& dataBlock) {
     std::string key;
     if (l == 2 && p == 0)
       key = "common";
-    else if (l == 2 && p >= 1 && p <= 6)
-      key = fmt::format("G{}", 53 + p);
+    else if (l == 2 && p >= 1 && p <= static_cast<int>(profile_.machine.workOffsetNames.size()))
+      key = workOffsetKey(p);
     else if (l == 20 && p >= 1 && p <= 99)
-      key = fmt::format("G54.1 P{}", p);
+      key = workOffsetKey(100 + p);
     else
       return fail(diag::code::DataOutOfRange, w.p->range, "G10 offset number out of range");
     auto value = setup_.workOffset(key);
@@ -854,7 +879,7 @@ bool Interpreter::move(const BlockWords& w) {
     return arc(w, to, extraTo, axisGiven(w, ax.first) || axisGiven(w, ax.second));
   }
   case GAction::TurningCycle:
-    return turningCycle(*cycles::turningCycleFromCode10(turningMode_), w);
+    return turningCycle(static_cast<cycles::TurningCycle>(turningMode_->arg), w);
   default:
     return fail(diag::code::NotImplemented, blockRange_, "motion mode not implemented yet");
   }
@@ -876,11 +901,12 @@ bool Interpreter::arc(const BlockWords& w, const Vec3& end, const motion::Extra&
   if (!w.r && !centreGiven)
     return fail(diag::code::ArcDefinition, at, "arc without R or I/J/K (nct.md §3.5)");
   int turns = 1;
-  if (w.l) {
-    if (w.l->number < 1 || w.l->number != std::floor(w.l->number))
-      return fail(diag::code::DataOutOfRange, w.l->range,
+  const ir::Word* turnsWord = profile_.machine.arcL == ArcLMeaning::Turns ? w.l : nullptr;
+  if (turnsWord) {
+    if (turnsWord->number < 1 || turnsWord->number != std::floor(turnsWord->number))
+      return fail(diag::code::DataOutOfRange, turnsWord->range,
                   "L of an arc counts started turns: 1 or more");
-    turns = static_cast<int>(w.l->number);
+    turns = static_cast<int>(turnsWord->number);
   }
   const Vec3 start = program_;
   const double s1 = start[ax.first], s2 = start[ax.second];
@@ -903,18 +929,25 @@ bool Interpreter::arc(const BlockWords& w, const Vec3& end, const motion::Extra&
       c2 = (s2 + e2) / 2 + side * h * d1 / chord;
     }
   } else {
-    c1 = s1 + (w.ijk[ax.first] ? mm(w.ijk[ax.first]->number) : 0.0);
-    c2 = s2 + (w.ijk[ax.second] ? mm(w.ijk[ax.second]->number) : 0.0);
+    // from the start point, unless the dialect's setting makes the centre absolute
+    if (setting(profile_, setup_, Setting::ArcCentreAbsolute) == 1) {
+      c1 = w.ijk[ax.first] ? mm(w.ijk[ax.first]->number) : s1;
+      c2 = w.ijk[ax.second] ? mm(w.ijk[ax.second]->number) : s2;
+    } else {
+      c1 = s1 + (w.ijk[ax.first] ? mm(w.ijk[ax.first]->number) : 0.0);
+      c2 = s2 + (w.ijk[ax.second] ? mm(w.ijk[ax.second]->number) : 0.0);
+    }
   }
   const double r0 = std::hypot(s1 - c1, s2 - c2), r1 = std::hypot(e1 - c1, e2 - c2);
   if (r0 < 1e-9) return fail(diag::code::ArcZeroRadius, at, "arc of radius 0");
-  if (!w.l && std::fabs(r1 - r0) > radiusTolerance_)
+  if (!turnsWord && std::fabs(r1 - r0) > radiusTolerance_)
     return fail(diag::code::ArcRadiusMismatch, at,
                 fmt::format("end point radius {} differs from start radius {} by more than "
-                            "{} (N1339 Radius Diff); program L for a spiral",
+                            "{} ({}); program L for a spiral",
                             emit::formatNumber(std::round(r1 * 1e4) / 1e4),
                             emit::formatNumber(std::round(r0 * 1e4) / 1e4),
-                            emit::formatNumber(radiusTolerance_)));
+                            emit::formatNumber(radiusTolerance_),
+                            settingLabel(profile_, Setting::ArcRadiusTolerance)));
   if (state_.feed <= 0) return fail(diag::code::MissingData, at, "arc without a feed rate F");
   Vec3 centre = start;
   centre[ax.first] = c1;
@@ -967,11 +1000,18 @@ bool Interpreter::arcTo(const Vec3& end, const Vec3& centre, bool cw, int turns,
   return true;
 }
 
+bool Interpreter::beforeMotion(const BlockWords& w) {
+  // M codes the dialect times before the motion of their block (none in NCT, nct.md §2.2)
+  return mcodes(w, MTiming::BeforeMotion);
+}
+
 bool Interpreter::afterMotion(const BlockWords& w) {
-  // M, S and T act after the motion of their block (nct.md §2.2)
+  // S and T act after the motion of their block, and the M codes timed so (nct.md §2.2)
   if (w.t) state_.selectedTool = static_cast<int>(w.t->number);
   bool spindleChanged = false;
-  const bool clampOnly = w.has(GAction::SetCoordinates); // G92 S is the clamp, not a speed
+  // S in a set-coordinates block may be the surface speed's clamp, not a speed (G92 S)
+  const bool clampOnly =
+      w.has(GAction::SetCoordinates) && profile_.machine.setCoordinatesSIsSpindleLimit;
   if (w.s && !clampOnly) {
     if (state_.surfaceSpeed)
       state_.surfaceSpeedValue = w.s->number;
@@ -980,16 +1020,20 @@ bool Interpreter::afterMotion(const BlockWords& w) {
     spindleChanged = true;
   }
   for (const ir::Word* m : w.m) {
-    const int code = static_cast<int>(m->number);
-    if (code == 3 || code == 4 || code == 5) {
-      state_.spindleDirection = code == 3 ? 1 : code == 4 ? -1 : 0;
+    const MCodeSpec* spec = profile_.machine.mcode(static_cast<int>(m->number));
+    if (!spec || spec->timing != MTiming::AfterMotion) continue;
+    if (spec->action == MAction::SpindleCW || spec->action == MAction::SpindleCCW ||
+        spec->action == MAction::SpindleStop) {
+      state_.spindleDirection = spec->action == MAction::SpindleCW    ? 1
+                                : spec->action == MAction::SpindleCCW ? -1
+                                                                      : 0;
       spindleChanged = true;
     }
   }
   if (state_.surfaceSpeed) {
-    // G96: rpm from the surface speed at the block's end point, radius |X| of the work
-    // system (nct.md §3.18: rapid blocks use the end-point speed)
-    const double radius = std::fabs(program_.x());
+    // G96: rpm from the surface speed at the block's end point, the radius along the
+    // dialect's radial axis of the work system (nct.md §3.18: rapid blocks use the end point)
+    const double radius = std::fabs(program_[profile_.machine.surfaceSpeedAxis]);
     const double metresPerMinute =
         state_.inch ? state_.surfaceSpeedValue * 0.3048 : state_.surfaceSpeedValue;
     double rpm = state_.maxSpindleSpeed;
@@ -1004,52 +1048,62 @@ bool Interpreter::afterMotion(const BlockWords& w) {
     }
   }
   if (spindleChanged) emitSpindle();
+  return mcodes(w, MTiming::AfterMotion);
+}
+
+bool Interpreter::mcodes(const BlockWords& w, MTiming timing) {
   for (const ir::Word* m : w.m) {
     const int code = static_cast<int>(m->number);
+    const MCodeSpec* spec = profile_.machine.mcode(code);
+    if (!spec) {
+      if (timing == MTiming::AfterMotion)
+        diags_.warning(diag::code::MCodeWithoutMotion, m->range,
+                       fmt::format("M{} has no meaning in the motion model; it is not carried "
+                                   "into the motion trace",
+                                   code));
+      continue;
+    }
+    if (spec->timing != timing) continue;
     motion::Event e;
     e.start = e.end = machine_;
-    switch (code) {
-    case 3:
-    case 4:
-    case 5:
+    switch (spec->action) {
+    case MAction::SpindleCW:
+    case MAction::SpindleCCW:
+    case MAction::SpindleStop:
+      if (timing == MTiming::AfterMotion) continue; // afterMotion() set the direction
+      state_.spindleDirection = spec->action == MAction::SpindleCW    ? 1
+                                : spec->action == MAction::SpindleCCW ? -1
+                                                                      : 0;
+      emitSpindle();
       continue;
-    case 19:
+    case MAction::SpindleOrient:
       e.kind = Kind::SpindleOrient;
       break;
-    case 6:
+    case MAction::ToolChange:
       state_.tool = state_.selectedTool;
       e.kind = Kind::ToolChange;
       e.value = state_.tool;
       break;
-    case 7:
-    case 8:
-    case 9:
+    case MAction::Coolant:
       e.kind = Kind::Coolant;
       e.value = code;
       break;
-    case 0:
-    case 1:
+    case MAction::Stop:
+    case MAction::OptionalStop:
       e.kind = Kind::Stop;
-      e.optional = code == 1;
+      e.optional = spec->action == MAction::OptionalStop;
       break;
-    case 2:
-    case 30:
+    case MAction::End:
+    case MAction::EndRewind:
       e.kind = Kind::End;
       e.value = code;
       emit(std::move(e));
       ended_ = true;
       resetModal();
       return false;
-    case 98:
-    case 99:
+    case MAction::Subprogram:
       return fail(diag::code::NotImplemented, m->range,
                   "subprogram calls need the expansion pass, which is not implemented yet");
-    default:
-      diags_.warning(diag::code::MCodeWithoutMotion, m->range,
-                     fmt::format("M{} has no meaning in the motion model; it is not carried into "
-                                 "the motion trace",
-                                 code));
-      continue;
     }
     emit(std::move(e));
   }
@@ -1061,8 +1115,10 @@ void Interpreter::emitDwell(double p) {
   e.kind = Kind::Dwell;
   e.start = e.end = machine_;
   e.extraStart = e.extraEnd = extra_;
-  e.value = p; // seconds, or revolutions under G95 unless N1337 SEC=1 (000:3427-3442)
-  e.perRevolution = state_.perRevolution && setup_.parameter("N1337.SEC", 0) == 0;
+  e.value = p; // seconds, or revolutions under feed per revolution unless the dialect's
+               // setting keeps seconds (000:3427-3442)
+  e.perRevolution =
+      state_.perRevolution && setting(profile_, setup_, Setting::DwellSecondsAlways) == 0;
   emit(std::move(e));
 }
 

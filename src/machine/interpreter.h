@@ -7,9 +7,11 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "diag/diagnostic.h"
 #include "dialect/profile.h"
@@ -18,10 +20,31 @@
 #include "machine/setup.h"
 #include "machine/transforms.h"
 #include "motion/event.h"
-#include "passes/cycles/drilling.h"
-#include "passes/cycles/turning.h"
+
+namespace gcx::cycles {
+struct CycleOp;
+struct ContourSegment;
+struct TurningWords;
+enum class TurningCycle : unsigned char;
+} // namespace gcx::cycles
 
 namespace gcx::machine {
+
+struct CycleState; // cycle_state.h
+
+/// Owns the cycle state; a copy of the interpreter (the contour probe) copies it.
+class CycleStateBox {
+public:
+  CycleStateBox();
+  ~CycleStateBox();
+  CycleStateBox(const CycleStateBox& other);
+  CycleStateBox& operator=(const CycleStateBox& other);
+  CycleState& operator*() const { return *state_; }
+  CycleState* operator->() const { return state_.get(); }
+
+private:
+  std::unique_ptr<CycleState> state_;
+};
 
 /// The modal state a block inherits (nct.md §2.1 groups that affect motion).
 struct ModalState {
@@ -48,14 +71,14 @@ struct ModalState {
   bool surfaceSpeed = false; // G96: S is a surface speed (m/min or ft/min)
   double surfaceSpeedValue = 0;
   double maxSpindleSpeed = 0; // G92 S clamp for G96 (0: none)
-  unsigned diameterAxes = 0;  // bit a: axis a (X=0) programmed as a diameter (G10.9, N0106)
+  unsigned diameterAxes = 0;  // bit a: axis a (X=0) programmed as a diameter (G10.9, setup)
   // the last value of words that only macro variables report (#4107-#4120, nct-macro.md §2.9.4)
   int lastD = 0, lastH = 0, lastM = 0, lastO = 0; // lastO: O word or setCalledProgram
   std::int64_t lastN = 0;                         // first N of the block
   double lastE = 0, lastS = 0;                    // as programmed (S: rpm, or m/min in G96)
 };
 
-/// Rotary-axis rollover (nct.md §3.10, N0107 REN/ABS/ASH, N0108 RollAmount).
+/// Rotary-axis rollover (nct.md §3.10; the dialect's rollover settings).
 struct Rollover {
   bool enabled = false;
   bool absoluteBySign = false; // ABS=1: the sign of the value gives the direction
@@ -100,6 +123,8 @@ public:
   void message(const std::string& text, const motion::Provenance& from, bool stop);
 
   bool ended() const { return ended_; }
+  /// A block with skip level n is left out (the dialect's skip sense and the setup's switches).
+  bool skips(int level) const;
   const ModalState& state() const { return state_; }
   /// Last programmed point, untransformed, in the current work system (mm).
   const Vec3& programPosition() const { return program_; }
@@ -116,7 +141,7 @@ public:
   }
   const Setup& setup() const { return setup_; }
   const Profile& profile() const { return profile_; }
-  /// Active length offset along Z (signed, mm) and the G92 / G52 shifts.
+  /// Active length offset (signed, mm) and the G92 / G52 shifts.
   double lengthOffset() const { return offsets_.length; }
   const Vec3& g92Shift() const { return offsets_.g92; }
   const Vec3& localOrigin() const { return offsets_.g52; }
@@ -150,7 +175,7 @@ private:
     Vec3 common = Vec3::Zero();
     Vec3 g92 = Vec3::Zero();
     Vec3 g52 = Vec3::Zero();
-    double length = 0;           // along Z (N1416 ZAX=1)
+    double length = 0;           // along Z, or the plane's normal (MachineRules)
     Vec3 turning = Vec3::Zero(); // G43.7 (nct.md §3.16)
   };
 
@@ -163,6 +188,10 @@ private:
   Vec3 toMachine(const Vec3& program) const; // full pipeline
   void reexpress();                          // program position from the machine position
   Vec3 currentWorkOffset() const;
+  /// The setup's key of work offset n (1..n: the standard ones; 100 + p: extended p).
+  std::string workOffsetKey(int offset) const;
+  /// The active tool length offset as a vector (MachineRules::lengthAlongPlaneNormal).
+  Vec3 lengthVector() const;
   void resetModal();
 
   /// Applies a G code that only changes modal state; false if it needs more than that.
@@ -177,7 +206,12 @@ private:
              double feed);
   /// An axis word in mm, halved on a diameter axis.
   double coordinate(int axis, const ir::Word& w) const;
+  /// The block's M codes timed before its motion.
+  bool beforeMotion(const BlockWords& w);
+  /// S, T and the M codes timed after the block's motion.
   bool afterMotion(const BlockWords& w);
+  /// Executes the block's M codes of one timing from the dialect's M table.
+  bool mcodes(const BlockWords& w, MTiming timing);
   /// Target of the axis words in program coordinates (G90/G91, I operator, U/V/W, polar).
   Vec3 target(const BlockWords& w, bool allowPolar) const;
   bool axisGiven(const BlockWords& w, int axis) const { return w.axis[axis] || w.uvw[axis]; }
@@ -244,7 +278,7 @@ private:
   Vec3 program_ = Vec3::Zero();
   Vec3 machine_ = Vec3::Zero();
   motion::Extra extra_ = motion::Extra::Zero(); // A B C (continuous, degrees), U V W (mm)
-  unsigned parallelAxes_ = 0; // bit i: U/V/W is an axis parallel to X/Y/Z (N0103.U ...)
+  unsigned parallelAxes_ = 0; // bit i: U/V/W is an axis parallel to X/Y/Z (a setting)
   Rollover rollover_;
   std::array<int, 64> modalCodes_{}; // per modal group: the G code (x10) last in force
   double radiusTolerance_;
@@ -253,15 +287,14 @@ private:
   std::map<std::string, std::array<double, 3>> rotations_; // basic rotations per work system
   std::map<int, double> wear_;                             // G10 L11 length wear per register
   std::map<int, double> radiusWear_;                       // #13000+n radius wear per register
-  cycles::DrillModal drill_;
+  CycleStateBox cycles_; // the cycles library's modal memory (cycle_state.h)
   ContourSource contours_;
   std::optional<std::int64_t> resumeAfter_;
-  int pendingTurning_ = 0; // code10 of a one-shot turning cycle in the current block
-  cycles::TurningModal turning_;
-  int turningMode_ = 0;                // code10 of the modal G77.7-G79.7 while group 1 holds it
-  std::optional<Vec3> turningEnd_;     // its last end point: omitted X/Z repeat it (§4.1)
-  std::optional<double> turningTaper_; // and its R
-  int lockedFrom_ = 0;                 // the group-15 code a tapping cycle's G63 replaced
+  const GCodeSpec* pendingTurning_ = nullptr; // a one-shot turning cycle in the current block
+  const GCodeSpec* turningMode_ = nullptr;    // the modal G77.7-G79.7 while group 1 holds it
+  std::optional<Vec3> turningEnd_;            // its last end point: omitted X/Z repeat it (§4.1)
+  std::optional<double> turningTaper_;        // and its R
+  int lockedFrom_ = 0;                        // the group-15 code a tapping cycle's G63 replaced
   bool deferCycles_ = false;
   bool ended_ = false;
   bool speedProgrammed_ = false; // an S word was given (before it, the speed is unknown)

@@ -1,11 +1,12 @@
 // The interpreter's side of the turning cycles (cycles.md §4): finding and checking the contour
 // blocks ns..nf, resolving them into moves on a scratch copy of the engine (so the contour means
 // exactly what the same blocks mean when G70.7 runs them), and G70.7 itself. The cycles'
-// geometry is passes/cycles/turning.h's.
+// geometry is cycles/turning.h's.
 #include <fmt/format.h>
 
 #include "diag/codes.h"
 #include "emit/number.h"
+#include "machine/cycle_state.h"
 #include "machine/interpreter.h"
 #include "motion/geometry.h"
 
@@ -169,7 +170,7 @@ cycles::TurningWords Interpreter::turningWords(cycles::TurningCycle cycle,
 bool Interpreter::turningCycle(cycles::TurningCycle cycle, const BlockWords& w) {
   using cycles::TurningCycle;
   const cycles::TurningWords words = turningWords(cycle, w);
-  switch (cycles::updateModal(turning_, words, diags_)) {
+  switch (cycles::updateModal(cycles_->turning, words, diags_)) {
   case cycles::TurningBlock::Error:
     return false;
   case cycles::TurningBlock::Stored:
@@ -207,7 +208,7 @@ bool Interpreter::turningCycle(cycles::TurningCycle cycle, const BlockWords& w) 
                                  "spindle speed (000:1682-1683)",
                                  cycles::turningCycleName(cycle)));
   }
-  const auto ops = cycles::expandTurning(req, turning_, words, diags_);
+  const auto ops = cycles::expandTurning(req, cycles_->turning, words, diags_);
   if (!ops) return false;
   // M S F of the P/Q block take effect at the start of the cycle (§4.7, 000:10482)
   if (!runCycleOps(*ops, contourCycle ? 0 : static_cast<std::size_t>(-1), w,
@@ -238,11 +239,8 @@ bool Interpreter::finishingCycle(const BlockWords& w) {
 }
 
 bool Interpreter::turningBlock(const BlockWords& w) {
-  const auto cycle = cycles::turningCycleFromCode10(pendingTurning_);
-  if (!cycle)
-    return fail(
-        diag::code::NotImplemented, blockRange_,
-        fmt::format("G{} is not implemented yet", emit::formatNumber(pendingTurning_ / 10.0)));
+  // the profile binds the code to a cycle of the library (GCodeSpec::arg)
+  const auto cycle = std::optional(static_cast<cycles::TurningCycle>(pendingTurning_->arg));
   if (*cycle == cycles::TurningCycle::G70) return finishingCycle(w) && afterMotion(w);
   const bool contourRun =
       (*cycle == cycles::TurningCycle::G71 || *cycle == cycles::TurningCycle::G72 ||

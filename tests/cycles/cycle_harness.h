@@ -13,7 +13,7 @@
 #include <sstream>
 #include <string>
 
-#include "passes/cycles/drilling_state.h"
+#include "cycles/drilling_state.h"
 #include "support/run_support.h"
 
 namespace gcx::test {

@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 
 #include "cycles/cycle_harness.h"
+#include "cycles/drilling.h"
 #include "diag/codes.h"
+#include "dialects/nct/profile.h"
+#include "machine/settings.h"
 #include "machine/setup.h"
-#include "passes/cycles/drilling.h"
 
 namespace gcx::test {
 namespace {
@@ -321,12 +323,18 @@ TEST(CyclesSpec_9_Q20, RadiusCompensationWarns) {
 
 // --- §2.1 codes, §2.8 parameters ------------------------------------------------------------
 
-TEST(CyclesSpec_2_1, CodesAndCsmAliases) {
-  EXPECT_EQ(cycles::drillCycleFromCode10(842), DrillCycle::G84_2);
-  EXPECT_EQ(cycles::drillCycleFromCode10(831), DrillCycle::G73);
-  EXPECT_EQ(cycles::drillCycleFromCode10(841), DrillCycle::G74);
-  EXPECT_EQ(cycles::drillCycleFromCode10(861), DrillCycle::G76);
-  EXPECT_FALSE(cycles::drillCycleFromCode10(800));
+TEST(CyclesSpec_2_1, NctBindsItsCodesToTheCycles) {
+  // the NCT profile names the cycle each code runs (GCodeSpec::arg)
+  auto cycleOf = [](double code) {
+    const GCodeSpec* g = nct::profile().gcode(code);
+    EXPECT_TRUE(g && g->action == GAction::DrillCycle) << code;
+    return g ? static_cast<DrillCycle>(g->arg) : DrillCycle::G89;
+  };
+  EXPECT_EQ(cycleOf(84.2), DrillCycle::G84_2);
+  EXPECT_EQ(cycleOf(73), DrillCycle::G73);
+  EXPECT_EQ(cycleOf(81), DrillCycle::G81);
+  EXPECT_EQ(cycleOf(89), DrillCycle::G89);
+  EXPECT_EQ(nct::profile().gcode(80)->action, GAction::CycleCancel);
   EXPECT_STREQ(cycles::cycleName(DrillCycle::G84_3), "G84.3");
   EXPECT_STREQ(cycles::cycleName(DrillCycle::G73), "G73");
 }
@@ -335,7 +343,7 @@ TEST(CyclesSpec_2_8, ParametersFromTheSetup) {
   machine::Setup s;
   s.parameters = {
       {"N1500", 0.7}, {"N0607.1", 0}, {"N1503.PTC", 1}, {"N0823", 29}, {"N0607.INX", 0}};
-  const cycles::DrillConfig c = cycles::drillConfig(s);
+  const cycles::DrillConfig c = machine::drillConfig(nct::profile(), s);
   EXPECT_EQ(c.returnG73, 0.7);
   EXPECT_EQ(c.clearanceG83, 1.0); // not set: the spec's test value
   EXPECT_FALSE(c.orient);
@@ -343,6 +351,8 @@ TEST(CyclesSpec_2_8, ParametersFromTheSetup) {
   EXPECT_TRUE(c.tapNormalPeck);
   EXPECT_FALSE(c.tapOrient);
   EXPECT_EQ(c.closeLoopMCode, 29);
+  EXPECT_STREQ(c.orientLabel, "N0607 ORI"); // messages name the setting as NCT does
+  EXPECT_STREQ(c.indexLabel, "N0607 INX");
 }
 
 } // namespace

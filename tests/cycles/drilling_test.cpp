@@ -6,8 +6,8 @@
 #include <numbers>
 
 #include "cycles/cycle_harness.h"
+#include "cycles/drilling.h"
 #include "diag/codes.h"
-#include "passes/cycles/drilling.h"
 
 namespace gcx::test {
 namespace {

@@ -8,8 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "cycles/turning.h"
 #include "diag/diagnostic.h"
-#include "passes/cycles/turning.h"
+#include "dialects/nct/profile.h"
 
 namespace gcx::test {
 
@@ -35,8 +36,9 @@ inline cycles::TurningWords words(const std::string& block, unsigned line = 1,
     const double v = std::strtod(block.c_str() + i + 1, &end);
     const std::size_t len = static_cast<std::size_t>(end - block.c_str()) - i;
     if (c == 'G') {
-      if (auto t = cycles::turningCycleFromCode10(static_cast<int>(std::lround(v * 10))))
-        w.cycle = *t; // G0-G3 of a contour block are the caller's
+      const GCodeSpec* g = nct::profile().gcode(v); // the NCT binding of the code
+      if (g && g->action == GAction::TurningCycle)
+        w.cycle = static_cast<cycles::TurningCycle>(g->arg); // G0-G3 are the caller's
     } else
       w.set(c, v, at(line, static_cast<unsigned>(i + 1), static_cast<unsigned>(len)));
     i += len;

@@ -1,0 +1,121 @@
+// How a dialect's control reads its words and settings, as data the machine model asks: which
+// word gives a dwell and in what unit, what M codes do and when, how a block skip switch acts,
+// and which setup key holds each machine setting. The core names a setting by what it means
+// (Setting::ArcRadiusTolerance); the dialect maps it to its own parameter key.
+// docs/machine-model.md.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace gcx {
+
+/// A machine setting the core reads, named by its meaning. The setup file holds it under the
+/// dialect's key (SettingSpec::key).
+enum class Setting : unsigned char {
+  ArcRadiusTolerance,   // mm: |end radius - start radius| an arc accepts without alarm
+  ParallelAxisU,        // 1: U is an axis parallel to X, not an incremental X
+  ParallelAxisV,        // 1: V likewise for Y
+  ParallelAxisW,        // 1: W likewise for Z
+  DiameterX,            // 1: X is programmed as a diameter at reset
+  DiameterY,            // 1: Y likewise
+  DiameterZ,            // 1: Z likewise
+  RolloverOn,           // 1: rotary axes roll over
+  RolloverBySign,       // 1: an absolute rotary value's sign gives the direction
+  RolloverShortest,     // 1: an absolute rotary move takes the shortest way
+  RolloverAmount,       // degrees of one rollover
+  DwellSecondsAlways,   // 1: a dwell is in seconds under feed per revolution too
+  ArcCentreAbsolute,    // 1: arc centre words are absolute in the work system, not incremental
+  PeckReturn,           // mm: high-speed peck retract
+  PeckClearance,        // mm: peck drilling clearance
+  BoreExtractionPct,    // %: retract override of the feed-out boring cycles
+  TapReturn,            // mm: peck rigid tapping retract
+  TapClearance,         // mm: peck rigid tapping clearance
+  TapExtractionPct,     // %: rigid tapping retract override
+  TapReturnPct,         // %: rigid tapping return override
+  TapOrients,           // 1: rigid tapping orients the spindle instead of closing its loop
+  TapPeckToR,           // 1: peck rigid tapping retracts to R
+  TapExtractionEnabled, // 1: the rigid tapping retract override applies
+  TapReturnEnabled,     // 1: the return override applies to peck retracts
+  SpindleOrientable,    // 1: the spindle can be oriented
+  SpindleIndexable,     // 1: the spindle has a position loop
+  CloseLoopMCode,       // the M code that closes the spindle position loop
+};
+
+/// Where the setup holds a setting in this dialect.
+struct SettingSpec {
+  Setting setting;
+  const char* key;             // the setup's parameter key ("N" + 4 digits in NCT)
+  const char* alias = nullptr; // read when key is not set (a bit by number)
+  double fallback = 0;         // when the setup sets neither
+  const char* label = "";      // how messages name it
+};
+
+/// What an M code does in the motion model.
+enum class MAction : unsigned char {
+  Stop,
+  OptionalStop,
+  End,       // end of program
+  EndRewind, // end of program and rewind
+  SpindleCW,
+  SpindleCCW,
+  SpindleStop,
+  SpindleOrient,
+  Coolant, // mist, flood, off: the code itself is the event's value
+  ToolChange,
+  Subprogram, // a call or return the expansion pass handles; reaching the machine is an error
+};
+
+/// When an M code acts relative to the motion of its block.
+enum class MTiming : unsigned char { BeforeMotion, AfterMotion };
+
+struct MCodeSpec {
+  int code = 0;
+  MAction action = MAction::Stop;
+  MTiming timing = MTiming::AfterMotion;
+};
+
+/// How block skip `/n` acts with switch n on.
+enum class SkipSense : unsigned char {
+  SkipWhenOn, // the block is left out while the switch is on
+  RunWhenOn,  // the block runs only while the switch is on
+};
+
+/// The dwell: which word gives the time and its unit.
+struct DwellRule {
+  char word = 'P';           // the word that carries the time
+  double secondsPerUnit = 1; // 0.1 for tenths of a second
+  /// Messages: the word missing, and a letter that is no dwell word in this dialect.
+  const char* missingMessage = "";
+  char rejectedWord = 0;
+  const char* rejectedMessage = "";
+};
+
+/// The meaning of L in an arc block.
+enum class ArcLMeaning : unsigned char {
+  Turns, // the number of started turns (a spiral or a multi-turn arc)
+  None,  // not an arc word
+};
+
+/// What the machine model follows for a dialect, beside its code tables.
+struct MachineRules {
+  std::vector<SettingSpec> settings;
+  std::vector<MCodeSpec> mcodes;
+  SkipSense skipSense = SkipSense::SkipWhenOn;
+  DwellRule dwell;
+  ArcLMeaning arcL = ArcLMeaning::Turns;
+  /// The tool length offset acts along the normal of the selected plane (else along Z).
+  bool lengthAlongPlaneNormal = false;
+  /// Constant surface speed: the axis whose distance from zero is the radius (0 X, 1 Y, 2 Z).
+  int surfaceSpeedAxis = 0;
+  /// S in a set-coordinates block is the constant surface speed's spindle limit.
+  bool setCoordinatesSIsSpindleLimit = false;
+  /// The setup's names of the work offsets: the standard ones 1..n in order, and the prefix of
+  /// the numbered extended ones (prefix + number).
+  std::vector<std::string> workOffsetNames;
+  std::string extendedWorkOffsetPrefix;
+
+  const SettingSpec* setting(Setting s) const;
+  const MCodeSpec* mcode(int code) const;
+};
+
+} // namespace gcx
