@@ -89,9 +89,9 @@ bool Expander::call(Frame& f, const ir::Block& b, const CodeMatch& m) {
     if (!m.program && !m.file)
       return fail(diag::code::MissingData, m.code->range,
                   fmt::format("{} without {} or <file>", codeText(*m.code), r.programWord));
-    if (m.program) unit = std::to_string(static_cast<std::int64_t>(m.program->number));
+    if (m.program) unit = programDigits(*m.program);
   } else {
-    const ProgramCall pc = programFromDigits(r, emit::formatNumber(m.code->number));
+    const ProgramCall pc = programFromDigits(r, programDigits(*m.code));
     unit = pc.unit;
     digitTimes = pc.times;
   }

@@ -49,8 +49,8 @@ Expander::CodeMatch Expander::match(const ir::Word& w, const ir::Block& flat) co
       if (x.kind == ir::ValueKind::Path) m.file = &x;
   if (row->onlyIfProgramExists) { // a user program overrides the built-in only if it exists
     const std::string unit = row->program == ProgramSource::Word
-                                 ? (program ? emit::formatNumber(program->number) : "")
-                                 : programFromDigits(*row, emit::formatNumber(w.number)).unit;
+                                 ? (program ? programDigits(*program) : "")
+                                 : programFromDigits(*row, programDigits(w)).unit;
     if (unit.empty() || library_.locate(unit, *stack_.back().program).empty()) return {};
   }
   return m;

@@ -1,5 +1,10 @@
 #include "dialect/control_flow.h"
 
+#include <algorithm>
+#include <cctype>
+
+#include "ir/block.h"
+
 namespace gcx {
 
 const Remap* RemapTable::find(std::string_view address, double value,
@@ -20,9 +25,16 @@ ProgramCall programFromDigits(const Remap& r, std::string_view digits) {
     return call;
   }
   const std::size_t n = r.nameDigits > 0 ? static_cast<std::size_t>(r.nameDigits) : digits.size();
-  call.unit = std::string(digits.substr(0, n));
+  call.unit = r.namePrefix + std::string(digits.substr(0, n));
   if (digits.size() > n) call.times = std::stol(std::string(digits.substr(n)));
   return call;
+}
+
+std::string programDigits(const ir::Word& w) {
+  const bool digits = !w.text.empty() && std::all_of(w.text.begin(), w.text.end(), [](char c) {
+    return std::isdigit(static_cast<unsigned char>(c));
+  });
+  return digits ? w.text : std::to_string(static_cast<std::int64_t>(w.number));
 }
 
 } // namespace gcx

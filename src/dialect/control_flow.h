@@ -32,8 +32,8 @@ class SystemVariableStore;
 /// words run first (nct.md §1.4 K5); a macro call's other words are its arguments.
 enum class FlowAction : unsigned char {
   Builtin,             // the machine executes the code itself (FMS GG<n>: the built-in G<n>)
-  CallSubprogram,      // run a program in the caller's local frame (NCT M98)
-  CallMacro,           // run a program in a new local frame bound from the call's words (G65)
+  CallSubprogram,      // run a program after the block (NCT M98, FMS P019, WL4 L0703)
+  CallMacro,           // run a program whose arguments are the block's words (NCT G65)
   CallCycle,           // CallMacro of a system cycle: the profile's cycleMacro checks it first
   Return,              // back to the caller, or repeat by the callee's count (NCT M99)
   ModalCall,           // register a call made after every block that moves an axis (G66)
@@ -46,8 +46,9 @@ enum class FlowAction : unsigned char {
 enum class ProgramSource : unsigned char {
   None,       // no program (Return, ModalCancel, EndProgram, Builtin)
   Word,       // the digits of another word of the block (NCT `M98 P12`: "12")
-  CodeDigits, // the digits of the remapped word itself (FMS `P019`: "019"; WL4 `L0703`: "07")
-  Fixed,      // always `program` (WL4 G81: "81")
+  CodeDigits, // the digits of the remapped word itself (FMS `P019`: "019"; WL4 `L0703`: "07";
+              // WL4 G81: "81"; with namePrefix "G", FMS G1: "G1")
+  Fixed,      // always fixedProgram
 };
 
 /// How the callee's local variables start.
@@ -66,6 +67,7 @@ struct Remap {
   ProgramSource program = ProgramSource::None;
   char programWord = 0;     // ProgramSource::Word: its letter (also M99 P: where to return)
   std::string fixedProgram; // ProgramSource::Fixed
+  std::string namePrefix;   // CodeDigits: put before the digits (FMS G-subprogram "G1")
   std::string builtin;      // Builtin: the address the machine executes (FMS GG -> G)
   std::optional<double> onlyProgram; // the row applies only when the program word has this value
   /// CodeDigits: how many leading digits name the program; the rest count repeats
@@ -78,8 +80,11 @@ struct Remap {
   bool fileWord = false; // a `<file>` word may name the program instead (NCT M98 <a.nct>)
   /// A repeat count below 1: an error citing this rule, or (empty) no call at all.
   std::string repeatBelowOneRule;
-  int modalGroup = 0; // Modal*: the modal group #40xx reports, and this code ×10
+  int modalGroup = 0; // Modal*: the machine's modal group reporting it (0: none), this code ×10
   int modalCode10 = 0;
+  /// ModalCall: the registering block's other words run, and a move among them makes the
+  /// first call (WL4 `G81 X10`, wl4.md §5.1); otherwise the block only registers (NCT G66).
+  bool registerRunsBlock = false;
   const char* spec = ""; // where the dialect specifies the row, for messages
 };
 
@@ -99,6 +104,9 @@ struct ProgramCall {
 };
 /// The program and repeats `digits` (the word's digits as written, no sign) give under row r.
 ProgramCall programFromDigits(const Remap& r, std::string_view digits);
+/// The digits a word names a program with: its text as written when that is all digits (FMS
+/// P019 keeps its zero, WL4 L0703 its four digits), else its value as a whole number.
+std::string programDigits(const ir::Word& w);
 
 /// Variable numbers: the local frame, the commons (globals), and everything above is the
 /// dialect's system variables.
