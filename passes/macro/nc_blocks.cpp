@@ -34,7 +34,7 @@ bool isModal(FlowAction a) {
 
 Expander::CodeMatch Expander::match(const ir::Word& w, const ir::Block& flat) const {
   CodeMatch m;
-  if (w.kind != ir::ValueKind::Number) return m;
+  if (w.kind != ir::ValueKind::Number || !flow_.remaps.mayMatch(w.address)) return m;
   const Remap* row = flow_.remaps.find(w.address, w.number);
   if (!row) return m;
   const ir::Word* program = wordOf(flat, row->programWord);
@@ -62,7 +62,7 @@ bool Expander::flatten(const ir::Block& b, ir::Block& flat) {
   flat.words.clear();
   bool call = false; // P is a program or sequence number in a call or return
   for (const ir::Word& w : b.words)
-    if (w.isLiteral())
+    if (w.isLiteral() && flow_.remaps.mayMatch(w.address))
       if (const Remap* r = flow_.remaps.find(w.address, w.number); r && r->programWordIsNumber)
         call = true;
   WordOptions opt;

@@ -10,12 +10,24 @@ namespace gcx {
 const Remap* RemapTable::find(std::string_view address, double value,
                               std::optional<double> programValue) const {
   for (const Remap& r : rows) {
-    if (r.address != address) continue;
+    if (r.address.size() != address.size() || r.address[0] != address[0] || r.address != address)
+      continue;
     if (r.code && (r.last ? value < *r.code || value > *r.last : value != *r.code)) continue;
     if (r.onlyProgram && programValue != r.onlyProgram) continue;
     return &r;
   }
   return nullptr;
+}
+
+std::uint32_t RemapTable::letters() const {
+  if (lettersOf_ != rows.size()) { // recounted when rows were added
+    letters_ = 0;
+    for (const Remap& r : rows)
+      if (!r.address.empty() && r.address[0] >= 'A' && r.address[0] <= 'Z')
+        letters_ |= 1u << (r.address[0] - 'A');
+    lettersOf_ = rows.size();
+  }
+  return letters_;
 }
 
 ProgramCall programFromDigits(const Remap& r, std::string_view digits) {

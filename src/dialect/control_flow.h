@@ -4,6 +4,7 @@
 // variables are laid out, how a call binds its arguments, which variable writes are messages,
 // and how a program name becomes a file. docs/control-flow.md describes the whole.
 #pragma once
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -95,6 +96,17 @@ struct RemapTable {
   /// one; null when the code is not remapped.
   const Remap* find(std::string_view address, double value,
                     std::optional<double> programValue = std::nullopt) const;
+  /// True if some row's address starts with the letter of `address`: a cheap test before
+  /// find for every word of every block.
+  bool mayMatch(std::string_view address) const {
+    return !address.empty() && address[0] >= 'A' && address[0] <= 'Z' &&
+           (letters() >> (address[0] - 'A') & 1u);
+  }
+
+private:
+  std::uint32_t letters() const;
+  mutable std::uint32_t letters_ = 0;
+  mutable std::size_t lettersOf_ = static_cast<std::size_t>(-1); // rows counted into letters_
 };
 
 /// A remapped code's program, resolved from a word's digits: the unit name and repeat count.
