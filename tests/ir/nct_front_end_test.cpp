@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "ir/items.h"
+#include "support/hand_built_ir.h"
 #include "support/test_support.h"
 
 namespace gcx::test {
