@@ -532,7 +532,7 @@ bool Expander::callSubprogram(Frame& f, const ir::Block& b, const ir::Word* p, c
                 fmt::format("more than {} nested subprogram and macro calls", limits_.maxDepth));
   const LoadedProgram* callee =
       p ? library_.byNumber(static_cast<std::int64_t>(p->number), *f.program, p->range)
-        : library_.byName(file->path, *f.program, file->range);
+        : library_.byName(file->text, *f.program, file->range);
   if (!callee) return false;
   Frame c;
   c.program = callee;
@@ -543,7 +543,7 @@ bool Expander::callSubprogram(Frame& f, const ir::Block& b, const ir::Word* p, c
   machine_.setCalledProgram(p ? static_cast<int>(p->number) : 0);
   c.what = p ? fmt::format("O{:04} (M98 P{})", static_cast<std::int64_t>(p->number),
                            static_cast<std::int64_t>(p->number))
-             : fmt::format("{} (M98 <{}>)", file->path, file->path);
+             : fmt::format("{} (M98 <{}>)", file->text, file->text);
   stack_.push_back(std::move(c));
   return true;
 }
@@ -742,12 +742,12 @@ bool Expander::callMacro(Frame& f, const ir::Block& b, const ir::Word* p, const 
       return false;
   const LoadedProgram* callee =
       p ? library_.byNumber(static_cast<std::int64_t>(p->number), *f.program, p->range)
-        : library_.byName(file->path, *f.program, file->range);
+        : library_.byName(file->text, *f.program, file->range);
   if (!callee) return false;
   machine_.setCalledProgram(p ? static_cast<int>(p->number) : 0);
   std::string what = p ? fmt::format("O{:04} (G65 P{})", static_cast<std::int64_t>(p->number),
                                      static_cast<std::int64_t>(p->number))
-                       : fmt::format("{} (G65 <{}>)", file->path, file->path);
+                       : fmt::format("{} (G65 <{}>)", file->text, file->text);
   return pushMacro(f, callee, args, times, std::move(what), b.range, f.modalVisible);
 }
 
