@@ -131,12 +131,6 @@ struct VariableSpace {
   int frameSize() const { return localLast + 1; }
 };
 
-/// Expression semantics a dialect chooses (the evaluator reads them).
-struct ExpressionChoices {
-  bool logicalAndOr = false; // AND/OR: bitwise on 32 bits (NCT) or logical (WL4)
-  bool fixFloors = false;    // FIX: truncate toward zero (NCT) or floor (WL4)
-};
-
 /// A write to a variable that is a message or alarm (NCT #3000 alarm, #3006 stop with message).
 struct MessageRule {
   enum Kind : unsigned char { Alarm, Stop, Note } kind = Note;
@@ -183,7 +177,6 @@ using ParameterLookup = std::function<double(const std::string& key, double fall
 struct ControlFlow {
   RemapTable remaps;
   VariableSpace variables;
-  ExpressionChoices expressions;
   /// Words that mark a file as needing the expansion pass (calls, loops, jumps, prints).
   std::vector<std::string> expansionMarkers;
 

@@ -57,8 +57,7 @@ struct Exec {
   Store store{diags};
   macro::Evaluator ev{store, diags};
 
-  explicit Exec(const std::string& text, const ExpressionChoices& choices = {}) {
-    ev.setChoices(choices);
+  explicit Exec(const std::string& text) {
     Parsed p = parseNct(text);
     EXPECT_TRUE(p.errors().empty()) << p.rendered();
     for (const ir::Block& b : p.blocks) {
@@ -374,31 +373,6 @@ TEST(MacroSpec_2_2, NamedVariablesAndIndices) {
   EXPECT_EQ(r.num(2), 1); // index 3
   EXPECT_EQ(r.num(3), 0); // vacant index = 0
   EXPECT_EQ(Exec("#1=#50\n").codes(), Codes{"NCTX01"});
-}
-
-// The dialect's expression choices (ControlFlow::expressions, docs/control-flow.md): NCT's AND/OR
-// are bitwise and FIX truncates; WL4's AND/OR are logical and FIX floors.
-TEST(ExpressionChoices, AndOrBitwiseOrLogical) {
-  const std::string text = "#1=6AND3\n#2=4OR0\n#3=0OR0\n#4=6XOR3\n";
-  Exec bitwise(text);
-  EXPECT_EQ(bitwise.num(1), 2);
-  EXPECT_EQ(bitwise.num(2), 4);
-  EXPECT_EQ(bitwise.num(3), 0);
-  Exec logical(text, ExpressionChoices{true, false});
-  EXPECT_EQ(logical.num(1), 1);
-  EXPECT_EQ(logical.num(2), 1);
-  EXPECT_EQ(logical.num(3), 0);
-  EXPECT_EQ(logical.num(4), 5); // XOR stays bitwise
-}
-
-TEST(ExpressionChoices, FixTruncatesOrFloors) {
-  const std::string text = "#1=FIX[-1.5]\n#2=FIX1.5\n";
-  Exec truncating(text);
-  EXPECT_EQ(truncating.num(1), -1);
-  EXPECT_EQ(truncating.num(2), 1);
-  Exec flooring(text, ExpressionChoices{false, true});
-  EXPECT_EQ(flooring.num(1), -2);
-  EXPECT_EQ(flooring.num(2), 1);
 }
 
 } // namespace
