@@ -61,10 +61,18 @@ bool Expander::flatten(const ir::Block& b, ir::Block& flat) {
   flat = b;
   flat.words.clear();
   bool call = false; // P is a program or sequence number in a call or return
-  for (const ir::Word& w : b.words)
-    if (w.isLiteral() && flow_.remaps.mayMatch(w.address))
-      if (const Remap* r = flow_.remaps.find(w.address, w.number); r && r->programWordIsNumber)
-        call = true;
+  remapped_ = false; // a word may be remapped: ncBlock looks the words up
+  for (const ir::Word& w : b.words) {
+    if (!flow_.remaps.mayMatch(w.address)) continue;
+    if (!w.isLiteral()) {
+      remapped_ = true; // its value decides
+      continue;
+    }
+    if (const Remap* r = flow_.remaps.find(w.address, w.number)) {
+      remapped_ = true;
+      call = call || r->programWordIsNumber;
+    }
+  }
   WordOptions opt;
   opt.callNumber = call;
   for (const ir::Word& w : b.words) {
@@ -142,6 +150,7 @@ bool Expander::ncBlock(Frame& f, const ir::Block& b) {
   // subprogram call, a return, a program end (the first one written)
   CodeMatch primary, subprogram, back, end;
   for (ir::Word& w : flat.words) {
+    if (!remapped_) break;
     const CodeMatch m = match(w, flat);
     if (!m.row) continue;
     switch (m.row->action) {
