@@ -116,7 +116,6 @@ const ControlFlow& controlFlow(const std::vector<CycleMacro>& cycleMacros) {
     ControlFlow f;
     f.remaps = remapTable(cycleMacros);
     f.variables = VariableSpace{1, 33, 100, 999}; // §2.1
-    f.expressions = ExpressionChoices{false, false};
     // G70.7-G73.7 read their contour blocks by N number, as jumps do
     f.expansionMarkers = {"M98", "M99",   "G65",   "G66",   "GOTO",  "WHILE", "DO",    "END",
                           "IF",  "DPRNT", "BPRNT", "POPEN", "G70.7", "G71.7", "G72.7", "G73.7"};

@@ -134,7 +134,7 @@ void printValue(std::string& out, const ir::Word& w) {
     emit::appendNumber(out, w.number);
     return;
   case ir::ValueKind::Path:
-    out += w.path + '>';
+    out += w.text + '>';
     return; // '<' is the address
   case ir::ValueKind::Expression:
     break;

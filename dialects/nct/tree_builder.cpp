@@ -191,7 +191,7 @@ private:
       ir::Word& word = b_.newWord(ir::kPathAddress, start(pw), length(pw));
       word.kind = ir::ValueKind::Path;
       const std::size_t p = start(pw); // the path keeps its case
-      word.path = b_.raw().text.substr(p + 1, pw->PATH()->getText().size() - 2);
+      word.text = b_.raw().text.substr(p + 1, pw->PATH()->getText().size() - 2);
     }
   }
 

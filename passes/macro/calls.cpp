@@ -36,7 +36,7 @@ bool Expander::tooDeep(const SourceRange& where) {
 
 std::string Expander::describe(const CodeMatch& m, const std::string& unit) const {
   if (!m.program && m.file)
-    return fmt::format("{} ({} <{}>)", m.file->path, codeText(*m.code), m.file->path);
+    return fmt::format("{} ({} <{}>)", m.file->text, codeText(*m.code), m.file->text);
   if (m.program)
     return fmt::format("{} ({} {}{})", library_.label(unit), codeText(*m.code), m.program->address,
                        static_cast<std::int64_t>(m.program->number));
@@ -89,9 +89,9 @@ bool Expander::call(Frame& f, const ir::Block& b, const CodeMatch& m) {
     if (!m.program && !m.file)
       return fail(diag::code::MissingData, m.code->range,
                   fmt::format("{} without {} or <file>", codeText(*m.code), r.programWord));
-    if (m.program) unit = std::to_string(static_cast<std::int64_t>(m.program->number));
+    if (m.program) unit = programDigits(*m.program);
   } else {
-    const ProgramCall pc = programFromDigits(r, emit::formatNumber(m.code->number));
+    const ProgramCall pc = programFromDigits(r, programDigits(*m.code));
     unit = pc.unit;
     digitTimes = pc.times;
   }
@@ -127,7 +127,7 @@ bool Expander::call(Frame& f, const ir::Block& b, const CodeMatch& m) {
         return false;
   const LoadedProgram* callee =
       !unit.empty() ? library_.byUnit(unit, *f.program, (m.program ? m.program : m.code)->range)
-                    : library_.byName(m.file->path, *f.program, m.file->range);
+                    : library_.byName(m.file->text, *f.program, m.file->range);
   if (!callee) return false;
   machine_.setCalledProgram(m.program ? static_cast<int>(m.program->number) : 0);
   // a shared-frame call sees every modal call again; a macro sees what its caller sees

@@ -33,7 +33,7 @@ bool Expander::runConfiguredCall(Frame& f, const ir::Block& b, const ir::Block& 
     site.callCode = c.word->number;
     std::vector<Value> args;
     if (!bind(site, args)) return false;
-    if (c.kind == ConfiguredCall::ModalG) { // a modal registration (NCT N1755 MEQ=0)
+    if (c.kind == ConfiguredCall::ModalG) { // a modal registration (an NCT parameter says so)
       ModalCall m;
       m.program = program;
       m.args = std::move(args);

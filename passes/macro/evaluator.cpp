@@ -166,10 +166,22 @@ std::optional<Value> Evaluator::compute(const ir::Expr& e) {
   case ExprKind::Parameter:
     return parameter(e);
   case ExprKind::Assign:
-    error(diag::code::NotImplemented, e, "an assignment inside an expression is not evaluated yet");
-    return std::nullopt;
+    return assignment(e);
   }
   return std::nullopt;
+}
+
+// `#n=e` inside an expression: the target first, then e, stored at once; yields e's value.
+std::optional<Value> Evaluator::assignment(const ir::Expr& e) {
+  if (!vars_.assignsInExpressions()) {
+    error(diag::code::SyntaxError, e, "an assignment cannot stand inside an expression here");
+    return std::nullopt;
+  }
+  auto n = variableNumber(e.args[0]);
+  if (!n) return std::nullopt;
+  auto v = value(e.args[1]);
+  if (!v || !vars_.write(*n, *v, e.range)) return std::nullopt;
+  return v;
 }
 
 std::optional<Value> Evaluator::named(const ir::Expr& e) {
@@ -252,18 +264,85 @@ std::optional<Value> Evaluator::binary(const ir::Expr& e) {
     return Value::of(e.op == ir::Op::Div ? a / b : a - b * std::trunc(a / b));
   case ir::Op::And:
   case ir::Op::Or:
-    if (choices_.logicalAndOr) { // WL4: true is any non-zero value, the result 1 or 0
-      const bool r = e.op == ir::Op::And ? a != 0 && b != 0 : a != 0 || b != 0;
-      return Value::of(r ? 1 : 0);
-    }
-    [[fallthrough]];
   case ir::Op::Xor: {
     if (!bitRange(a, e.args[0]) || !bitRange(b, e.args[1])) return std::nullopt;
     return Value::of(bitwise(e.op, a, b));
   }
-  default:
-    return Value::of(a + b); // Neg, Plus, Not are unary; the parser never builds them here
+  case ir::Op::Pow: // a result that is no finite number is reported by value()
+    return Value::of(std::pow(a, b));
+  case ir::Op::FloorMod:
+    if (b == 0) {
+      error(diag::code::DivideByZero, e, "attempt to divide by zero");
+      return std::nullopt;
+    }
+    return Value::of(a - std::fabs(b) * std::floor(a / std::fabs(b)));
+  case ir::Op::Eq:
+  case ir::Op::Ne:
+  case ir::Op::Lt:
+  case ir::Op::Le:
+  case ir::Op::Gt:
+  case ir::Op::Ge:
+    return relational(e, *lhs, *rhs);
+  case ir::Op::LogicalAnd:
+    return Value::of((a != 0) && (b != 0) ? 1.0 : 0.0);
+  case ir::Op::LogicalOr:
+    return Value::of((a != 0) || (b != 0) ? 1.0 : 0.0);
+  case ir::Op::LogicalXor:
+    return Value::of((a != 0) != (b != 0) ? 1.0 : 0.0);
+  case ir::Op::Neg: // unary; the parsers never build them here
+  case ir::Op::Plus:
+  case ir::Op::Not:
+    break;
   }
+  error(diag::code::SyntaxError, e, fmt::format("{} is not a binary operator", ir::spelling(e.op)));
+  return std::nullopt;
+}
+
+namespace {
+
+ir::RelOp relOpOf(ir::Op op) {
+  switch (op) {
+  case ir::Op::Eq:
+    return ir::RelOp::Eq;
+  case ir::Op::Ne:
+    return ir::RelOp::Ne;
+  case ir::Op::Lt:
+    return ir::RelOp::Lt;
+  case ir::Op::Le:
+    return ir::RelOp::Le;
+  case ir::Op::Gt:
+    return ir::RelOp::Gt;
+  default:
+    return ir::RelOp::Ge;
+  }
+}
+
+// Rounds half away from zero to p decimals.
+double roundTo(double v, int p) {
+  const double scale = std::pow(10.0, p);
+  return roundHalfAway(v * scale) / scale;
+}
+
+} // namespace
+
+// A relational operator inside an expression is 1 or 0; inside a guard with a precision p it
+// compares round_p(a-b) with 0 (wl4.md §6.5).
+std::optional<Value> Evaluator::relational(const ir::Expr& e, const Value& lhs, const Value& rhs) {
+  const ir::RelOp op = relOpOf(e.op);
+  const bool holds =
+      precision_
+          ? compare(Value::of(roundTo(lhs.orZero() - rhs.orZero(), *precision_)), op, Value::of(0))
+          : compare(lhs, op, rhs, vacantOrder_);
+  return Value::of(holds ? 1.0 : 0.0);
+}
+
+std::optional<bool> Evaluator::guard(const ir::Expr& e, std::optional<int> precision) {
+  const std::optional<int> outer = precision_;
+  precision_ = precision;
+  auto v = number(e);
+  precision_ = outer;
+  if (!v) return std::nullopt;
+  return (precision ? roundTo(*v, *precision) : *v) != 0;
 }
 
 // §3.3: functions in degrees with the manual's domain errors.
@@ -314,18 +393,23 @@ std::optional<Value> Evaluator::call(const ir::Expr& e) {
     return Value::of(std::log(x));
   case ir::Func::Abs:
     return Value::of(std::fabs(x));
-  case ir::Func::Fix: // toward zero (NCT) or down (WL4)
-    return Value::of(choices_.fixFloors ? std::floor(x) : std::trunc(x));
+  case ir::Func::Fix:
+    return Value::of(std::trunc(x));
   case ir::Func::Fup: // away from zero; a whole number stays (§12 Q2)
     return Value::of(x >= 0 ? std::ceil(x) : std::floor(x));
   case ir::Func::Round:
+    return Value::of(roundHalfAway(x));
   case ir::Func::Floor:
+    return Value::of(std::floor(x));
   case ir::Func::Ceil:
-  case ir::Func::Atan2:
-    break;
+    return Value::of(std::ceil(x));
+  case ir::Func::Atan2: { // ATAN(a)/(b): atan2 in (-180, 180] (wl4.md §6.3)
+    auto divisor = value(e.args[1]);
+    if (!divisor) return std::nullopt;
+    const double deg = std::atan2(x, divisor->orZero()) * kToDeg;
+    return Value::of(deg == -180.0 ? 180.0 : deg);
   }
-  error(diag::code::NotImplemented, e,
-        fmt::format("{} is not evaluated yet", ir::spelling(e.func)));
+  }
   return std::nullopt;
 }
 

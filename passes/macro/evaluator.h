@@ -4,7 +4,6 @@
 #include <optional>
 
 #include "diag/diagnostic.h"
-#include "dialect/control_flow.h"
 #include "ir/expr.h"
 #include "passes/macro/value.h"
 
@@ -34,6 +33,9 @@ public:
   /// matters (GOTO#1 is 2125, §2.5 rule 5) use value().
   std::optional<double> number(const ir::Expr& e);
   std::optional<bool> condition(const ir::Condition& c);
+  /// A guard `IF<p> (e)` (wl4.md §6.5): each relational operator inside compares
+  /// round_p(a-b) with 0, and e holds when round_p(e) != 0; no precision: exact.
+  std::optional<bool> guard(const ir::Expr& e, std::optional<int> precision);
   /// The number n of an assignment target `#n` or `#[e]` (e rounded half away from zero).
   std::optional<int> variableNumber(const ir::Expr& target);
   /// e as a variable number or symbolic index: vacant = 0, rounded half away from zero (§2.2);
@@ -42,14 +44,14 @@ public:
 
   diag::Engine& diags() { return diags_; }
   void setVacantOrder(VacantOrder o) { vacantOrder_ = o; }
-  /// The dialect's choices: AND/OR bitwise or logical, FIX truncating or flooring.
-  void setChoices(const ExpressionChoices& c) { choices_ = c; }
 
 private:
   std::optional<Value> compute(const ir::Expr& e);
   std::optional<Value> unary(const ir::Expr& e);
   std::optional<Value> binary(const ir::Expr& e);
   std::optional<Value> call(const ir::Expr& e);
+  std::optional<Value> relational(const ir::Expr& e, const Value& lhs, const Value& rhs);
+  std::optional<Value> assignment(const ir::Expr& e);
   std::optional<Value> parameter(const ir::Expr& e);
   std::optional<Value> named(const ir::Expr& e);
   std::optional<int> integer(double v, const ir::Expr& where, const char* code, const char* what);
@@ -59,7 +61,7 @@ private:
   VariableAccess& vars_;
   diag::Engine& diags_;
   VacantOrder vacantOrder_ = VacantOrder::Nct;
-  ExpressionChoices choices_;
+  std::optional<int> precision_; // of the guard being evaluated
 };
 
 } // namespace gcx::macro

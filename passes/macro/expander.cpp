@@ -25,7 +25,6 @@ Expander::Expander(ProgramLibrary& library, machine::Interpreter& machine, diag:
       diags_(diags), limits_(limits), eval_(*this, diags) {
   for (const auto& [n, v] : machine_.setup().variables)
     if (n >= flow_.variables.commonFirst) commons_[n] = Value::of(v);
-  eval_.setChoices(flow_.expressions);
 }
 
 Expander::~Expander() = default;

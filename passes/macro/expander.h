@@ -137,6 +137,7 @@ private:
   enum class Periphery { Closed, AwaitingName, Open } periphery_ = Periphery::Closed;
   std::function<void(const ir::Block&)> onFlat_;
   bool done_ = false;
+  bool remapped_ = false; // the block flatten saw last may hold a remapped code
 };
 
 /// True if a program file may need the expansion pass (the dialect's expansion markers, or a

@@ -18,17 +18,17 @@ const ModalCall* Expander::visibleModalCall() const {
 
 bool Expander::modalBlock(Frame& f, const ir::Block& b, const ir::Block& flat, const CodeMatch& m) {
   const Remap& r = *m.row;
-  (void)flat;
   if (r.action == FlowAction::ModalCancel) {
     if (!modalCalls_.empty()) modalCalls_.pop_back();
-    machine_.setModalCode(r.modalGroup,
-                          modalCalls_.empty() ? r.modalCode10 : modalCalls_.back().code10);
+    if (r.modalGroup)
+      machine_.setModalCode(r.modalGroup,
+                            modalCalls_.empty() ? r.modalCode10 : modalCalls_.back().code10);
     ++f.pc;
     return true;
   }
   const bool everyBlock = r.action == FlowAction::ModalCallEveryBlock;
   const ir::Word* p = m.program;
-  if (!p)
+  if (r.program == ProgramSource::Word && !p)
     return fail(diag::code::MissingData, m.code->range,
                 fmt::format("{}{} needs {} (program number)", m.code->address,
                             emit::formatNumber(m.code->number), r.programWord));
@@ -36,18 +36,30 @@ bool Expander::modalBlock(Frame& f, const ir::Block& b, const ir::Block& flat, c
   call.everyBlock = everyBlock;
   call.code10 = r.modalCode10;
   call.frame = r.frame;
-  const std::string unit = std::to_string(static_cast<std::int64_t>(p->number));
-  call.program = library_.byUnit(unit, *f.program, p->range);
+  const std::string unit = r.program == ProgramSource::Word
+                               ? programDigits(*p)
+                               : programFromDigits(r, programDigits(*m.code)).unit;
+  call.program = library_.byUnit(unit, *f.program, (p ? p : m.code)->range);
   if (!call.program) return false;
   call.times = m.repeat ? static_cast<std::int64_t>(m.repeat->number) : 1;
-  CallSite site;
-  site.block = &b;
-  site.callCode = m.code->number;
-  site.programWord = p;
-  if (!bind(site, call.args)) return false;
+  if (r.frame == LocalFrame::Arguments) {
+    CallSite site;
+    site.block = &b;
+    site.callCode = m.code->number;
+    site.programWord = p;
+    if (!bind(site, call.args)) return false;
+  }
   call.what = describe(m, unit);
   modalCalls_.push_back(call);
-  machine_.setModalCode(r.modalGroup, r.modalCode10);
+  if (r.modalGroup) machine_.setModalCode(r.modalGroup, r.modalCode10);
+  if (r.registerRunsBlock) { // the block's own words run, a move among them calls (WL4)
+    ir::Block nc = flat;
+    std::erase_if(nc.words, [&](const ir::Word& w) {
+      return w.range.begin.offset == m.code->range.begin.offset ||
+             (r.programWord && w.is(r.programWord)) || (r.repeatWord && w.is(r.repeatWord));
+    });
+    return execute(f, b, nc);
+  }
   if (!everyBlock) { // a registration calls nothing and moves nothing in its own block (D1)
     ++f.pc;
     return true;

@@ -34,7 +34,7 @@ bool isModal(FlowAction a) {
 
 Expander::CodeMatch Expander::match(const ir::Word& w, const ir::Block& flat) const {
   CodeMatch m;
-  if (w.kind != ir::ValueKind::Number) return m;
+  if (w.kind != ir::ValueKind::Number || !flow_.remaps.mayMatch(w.address)) return m;
   const Remap* row = flow_.remaps.find(w.address, w.number);
   if (!row) return m;
   const ir::Word* program = wordOf(flat, row->programWord);
@@ -49,8 +49,8 @@ Expander::CodeMatch Expander::match(const ir::Word& w, const ir::Block& flat) co
       if (x.kind == ir::ValueKind::Path) m.file = &x;
   if (row->onlyIfProgramExists) { // a user program overrides the built-in only if it exists
     const std::string unit = row->program == ProgramSource::Word
-                                 ? (program ? emit::formatNumber(program->number) : "")
-                                 : programFromDigits(*row, emit::formatNumber(w.number)).unit;
+                                 ? (program ? programDigits(*program) : "")
+                                 : programFromDigits(*row, programDigits(w)).unit;
     if (unit.empty() || library_.locate(unit, *stack_.back().program).empty()) return {};
   }
   return m;
@@ -61,10 +61,18 @@ bool Expander::flatten(const ir::Block& b, ir::Block& flat) {
   flat = b;
   flat.words.clear();
   bool call = false; // P is a program or sequence number in a call or return
-  for (const ir::Word& w : b.words)
-    if (w.isLiteral())
-      if (const Remap* r = flow_.remaps.find(w.address, w.number); r && r->programWordIsNumber)
-        call = true;
+  remapped_ = false; // a word may be remapped: ncBlock looks the words up
+  for (const ir::Word& w : b.words) {
+    if (!flow_.remaps.mayMatch(w.address)) continue;
+    if (!w.isLiteral()) {
+      remapped_ = true; // its value decides
+      continue;
+    }
+    if (const Remap* r = flow_.remaps.find(w.address, w.number)) {
+      remapped_ = true;
+      call = call || r->programWordIsNumber;
+    }
+  }
   WordOptions opt;
   opt.callNumber = call;
   for (const ir::Word& w : b.words) {
@@ -142,6 +150,7 @@ bool Expander::ncBlock(Frame& f, const ir::Block& b) {
   // subprogram call, a return, a program end (the first one written)
   CodeMatch primary, subprogram, back, end;
   for (ir::Word& w : flat.words) {
+    if (!remapped_) break;
     const CodeMatch m = match(w, flat);
     if (!m.row) continue;
     switch (m.row->action) {

@@ -17,7 +17,7 @@ bool Expander::print(const ir::Stmt& s) {
     periphery_ = Periphery::Open;
     return true;
   }
-  // the dialect may leave out the '+' and the leading zeros (NCT N1757 PNT)
+  // the dialect may leave out the '+' and the leading zeros (an NCT parameter bit)
   const bool omit = flow_.printOmitsSign && flow_.printOmitsSign(parameters());
   std::string line;
   for (const ir::PrintItem& it : s.items) {

@@ -33,6 +33,14 @@ public:
                                           const SourceRange& where) = 0;
   /// AXNUM[letter]: number of the axis in the channel, nullopt after reporting (2017).
   virtual std::optional<int> axisNumber(char letter, const SourceRange& where) = 0;
+  /// Whether `#n=e` may stand inside an expression (WL4, wl4.md §6.4); NCT has no such form.
+  virtual bool assignsInExpressions() const { return false; }
+  /// Stores v in #n for an assignment inside an expression; false after reporting a located
+  /// error. Called only when assignsInExpressions().
+  virtual bool write(int number, const Value& v, const SourceRange& where) {
+    (void)number, (void)v, (void)where;
+    return false;
+  }
 };
 
 } // namespace gcx::macro

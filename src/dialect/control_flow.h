@@ -4,6 +4,7 @@
 // variables are laid out, how a call binds its arguments, which variable writes are messages,
 // and how a program name becomes a file. docs/control-flow.md describes the whole.
 #pragma once
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -32,8 +33,8 @@ class SystemVariableStore;
 /// words run first (nct.md §1.4 K5); a macro call's other words are its arguments.
 enum class FlowAction : unsigned char {
   Builtin,             // the machine executes the code itself (FMS GG<n>: the built-in G<n>)
-  CallSubprogram,      // run a program in the caller's local frame (NCT M98)
-  CallMacro,           // run a program in a new local frame bound from the call's words (G65)
+  CallSubprogram,      // run a program after the block (NCT M98, FMS P019, WL4 L0703)
+  CallMacro,           // run a program whose arguments are the block's words (NCT G65)
   CallCycle,           // CallMacro of a system cycle: the profile's cycleMacro checks it first
   Return,              // back to the caller, or repeat by the callee's count (NCT M99)
   ModalCall,           // register a call made after every block that moves an axis (G66)
@@ -46,8 +47,9 @@ enum class FlowAction : unsigned char {
 enum class ProgramSource : unsigned char {
   None,       // no program (Return, ModalCancel, EndProgram, Builtin)
   Word,       // the digits of another word of the block (NCT `M98 P12`: "12")
-  CodeDigits, // the digits of the remapped word itself (FMS `P019`: "019"; WL4 `L0703`: "07")
-  Fixed,      // always `program` (WL4 G81: "81")
+  CodeDigits, // the digits of the remapped word itself (FMS `P019`: "019"; WL4 `L0703`: "07";
+              // WL4 G81: "81"; with namePrefix "G", FMS G1: "G1")
+  Fixed,      // always fixedProgram
 };
 
 /// How the callee's local variables start.
@@ -66,6 +68,7 @@ struct Remap {
   ProgramSource program = ProgramSource::None;
   char programWord = 0;     // ProgramSource::Word: its letter (also M99 P: where to return)
   std::string fixedProgram; // ProgramSource::Fixed
+  std::string namePrefix;   // CodeDigits: put before the digits (FMS G-subprogram "G1")
   std::string builtin;      // Builtin: the address the machine executes (FMS GG -> G)
   std::optional<double> onlyProgram; // the row applies only when the program word has this value
   /// CodeDigits: how many leading digits name the program; the rest count repeats
@@ -78,8 +81,11 @@ struct Remap {
   bool fileWord = false; // a `<file>` word may name the program instead (NCT M98 <a.nct>)
   /// A repeat count below 1: an error citing this rule, or (empty) no call at all.
   std::string repeatBelowOneRule;
-  int modalGroup = 0; // Modal*: the modal group #40xx reports, and this code ×10
+  int modalGroup = 0; // Modal*: the machine's modal group reporting it (0: none), this code ×10
   int modalCode10 = 0;
+  /// ModalCall: the registering block's other words run, and a move among them makes the
+  /// first call (WL4 `G81 X10`, wl4.md §5.1); otherwise the block only registers (NCT G66).
+  bool registerRunsBlock = false;
   const char* spec = ""; // where the dialect specifies the row, for messages
 };
 
@@ -90,6 +96,17 @@ struct RemapTable {
   /// one; null when the code is not remapped.
   const Remap* find(std::string_view address, double value,
                     std::optional<double> programValue = std::nullopt) const;
+  /// True if some row's address starts with the letter of `address`: a cheap test before
+  /// find for every word of every block.
+  bool mayMatch(std::string_view address) const {
+    return !address.empty() && address[0] >= 'A' && address[0] <= 'Z' &&
+           (letters() >> (address[0] - 'A') & 1u);
+  }
+
+private:
+  std::uint32_t letters() const;
+  mutable std::uint32_t letters_ = 0;
+  mutable std::size_t lettersOf_ = static_cast<std::size_t>(-1); // rows counted into letters_
 };
 
 /// A remapped code's program, resolved from a word's digits: the unit name and repeat count.
@@ -99,6 +116,9 @@ struct ProgramCall {
 };
 /// The program and repeats `digits` (the word's digits as written, no sign) give under row r.
 ProgramCall programFromDigits(const Remap& r, std::string_view digits);
+/// The digits a word names a program with: its text as written when that is all digits (FMS
+/// P019 keeps its zero, WL4 L0703 its four digits), else its value as a whole number.
+std::string programDigits(const ir::Word& w);
 
 /// Variable numbers: the local frame, the commons (globals), and everything above is the
 /// dialect's system variables.
@@ -109,12 +129,6 @@ struct VariableSpace {
   int commonLast = 999;
   /// Slots of a local frame (indices 0..frameSize-1; NCT 34 for #1-#33).
   int frameSize() const { return localLast + 1; }
-};
-
-/// Expression semantics a dialect chooses (the evaluator reads them).
-struct ExpressionChoices {
-  bool logicalAndOr = false; // AND/OR: bitwise on 32 bits (NCT) or logical (WL4)
-  bool fixFloors = false;    // FIX: truncate toward zero (NCT) or floor (WL4)
 };
 
 /// A write to a variable that is a message or alarm (NCT #3000 alarm, #3006 stop with message).
@@ -163,7 +177,6 @@ using ParameterLookup = std::function<double(const std::string& key, double fall
 struct ControlFlow {
   RemapTable remaps;
   VariableSpace variables;
-  ExpressionChoices expressions;
   /// Words that mark a file as needing the expansion pass (calls, loops, jumps, prints).
   std::vector<std::string> expansionMarkers;
 

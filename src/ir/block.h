@@ -27,15 +27,15 @@ struct Word {
   std::string address;      // upper case: "X", "G", ",C", "AX", "LIMS", "GG"
   bool incremental = false; // NCT I operator (nct.md §1.2 rule 4)
   ValueKind kind = ValueKind::Number;
+  std::uint32_t order = 0; // place among the block's items (see Block)
   double number = 0;
-  /// A literal as written, sign and digits without blanks: "-40", "07" (FMS P07 is not P7),
-  /// "0703" (WL4 L: program 07, 3 times), "1.". Empty for expressions and paths.
+  /// The value as written. A literal: sign and digits without blanks, "-40", "07" (FMS P07 is
+  /// not P7), "0703" (WL4 L: program 07, 3 times), "1.". A Path: the file name (case kept).
+  /// Empty for an expression. One string for both keeps a word small: blocks copy words.
   std::string text;
   Expr expr;                   // when kind == Expression
-  std::string path;            // when kind == Path, as written (case kept)
   std::vector<Expr> axisIndex; // AX[e]=: one element
   SourceRange range;
-  std::uint32_t order = 0; // place among the block's items (see Block)
 
   bool isLiteral() const { return kind == ValueKind::Number; }
   bool is(char letter) const { return address.size() == 1 && address[0] == letter; }

@@ -43,7 +43,7 @@ nlohmann::json wordJson(const Word& w, bool with) {
     wj["expr"] = toJson(w.expr, with);
     break;
   case ValueKind::Path:
-    wj["path"] = w.path;
+    wj["path"] = w.text;
     break;
   }
   if (!w.axisIndex.empty()) wj["axis"] = toJson(w.axisIndex.front(), with);

@@ -164,7 +164,7 @@ TEST(NctSpec_5_1, SubprogramByFileNameKeepsItsCase) {
   const ir::Block b = only(parseNct("M98 <..\\Sub\\Pocket.prg> L2"));
   ASSERT_EQ(b.words.size(), 3u);
   EXPECT_EQ(b.words[1].kind, ir::ValueKind::Path);
-  EXPECT_EQ(b.words[1].path, "..\\Sub\\Pocket.prg");
+  EXPECT_EQ(b.words[1].text, "..\\Sub\\Pocket.prg");
 }
 
 TEST(MacroSpec_1_1_L7, KeywordsGluedToOperands) {

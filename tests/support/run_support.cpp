@@ -153,9 +153,10 @@ ProgramRun runNct(const std::string& text, const machine::Setup& setup, motion::
 namespace gcx::test {
 
 namespace {
-MacroRun runMacroUnder(const std::map<std::string, std::string>& files, const std::string& main,
-                       const std::vector<int>& watch, const machine::Setup& setup,
-                       const macro::Limits& limits, const std::vector<std::string>& libraryDirs) {
+MacroRun runMacroUnder(const Dialect& dialect, const std::map<std::string, std::string>& files,
+                       const std::string& main, const std::vector<int>& watch,
+                       const machine::Setup& setup, const macro::Limits& limits,
+                       const std::vector<std::string>& libraryDirs) {
   static int counter = 0;
   const fs::path dir =
       fs::temp_directory_path() / fmt::format("gcx-macro-{}-{}", ::getpid(), ++counter);
@@ -170,12 +171,12 @@ MacroRun runMacroUnder(const std::map<std::string, std::string>& files, const st
   std::vector<std::string> libs;
   for (const std::string& d : libraryDirs)
     libs.push_back((dir / d).string());
-  macro::ProgramLibrary library(*findDialect("nct"), sm, diags, libs);
+  macro::ProgramLibrary library(dialect, sm, diags, libs);
   std::vector<motion::Event>& events = run.events;
   Collect sink(events, nullptr);
   std::ostringstream printed;
   if (const macro::LoadedProgram* prog = library.load((dir / main).string())) {
-    machine::Interpreter interp(nct::profile(), setup, sink, diags);
+    machine::Interpreter interp(dialect.profile(), setup, sink, diags);
     macro::Expander expander(library, interp, diags, limits);
     expander.setPrintOutput(&printed);
     expander.run(*prog);
@@ -201,12 +202,17 @@ MacroRun runMacro(const std::map<std::string, std::string>& files, const std::st
                   std::uint64_t maxJumps, const std::vector<std::string>& libraryDirs) {
   macro::Limits limits;
   limits.maxJumps = maxJumps;
-  return runMacroUnder(files, main, watch, setup, limits, libraryDirs);
+  return runMacroUnder(*findDialect("nct"), files, main, watch, setup, limits, libraryDirs);
 }
 
 MacroRun runMacroLimited(const std::map<std::string, std::string>& files, const std::string& main,
                          const macro::Limits& limits) {
-  return runMacroUnder(files, main, {}, {}, limits, {});
+  return runMacroUnder(*findDialect("nct"), files, main, {}, {}, limits, {});
+}
+
+MacroRun runMacroAs(const Dialect& dialect, const std::map<std::string, std::string>& files,
+                    const std::string& main, const std::vector<int>& watch) {
+  return runMacroUnder(dialect, files, main, watch, {}, macro::Limits{}, {});
 }
 
 } // namespace gcx::test

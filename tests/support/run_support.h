@@ -35,6 +35,9 @@ std::string n4(double v);
 
 #include "passes/macro/value.h"
 
+namespace gcx {
+struct Dialect;
+}
 namespace gcx::macro {
 struct Limits;
 }
@@ -55,5 +58,9 @@ MacroRun runMacro(const std::map<std::string, std::string>& files, const std::st
 /// The same under the given limits on jumps, blocks and call depth (`--max-jumps` ...).
 MacroRun runMacroLimited(const std::map<std::string, std::string>& files, const std::string& main,
                          const macro::Limits& limits);
+/// The same through another dialect's profile and program lookup (NCT syntax, its own
+/// ControlFlow): the control-flow engine under hand-made remap tables.
+MacroRun runMacroAs(const Dialect& dialect, const std::map<std::string, std::string>& files,
+                    const std::string& main, const std::vector<int>& watch = {});
 
 } // namespace gcx::test
