@@ -17,8 +17,8 @@
 #include <string>
 
 #include "diag/diagnostic.h"
-#include "machine/interpreter.h"
 #include "dialects/nct/system_variable_map.h"
+#include "machine/interpreter.h"
 #include "passes/macro/system_variable_store.h"
 
 namespace gcx::nct {

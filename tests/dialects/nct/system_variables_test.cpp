@@ -7,8 +7,8 @@
 
 #include "diag/codes.h"
 #include "dialects/nct/profile.h"
-#include "machine/interpreter.h"
 #include "dialects/nct/system_variables.h"
+#include "machine/interpreter.h"
 #include "support/test_support.h"
 
 namespace gcx::test {
