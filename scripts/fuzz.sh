@@ -80,7 +80,8 @@ merge)
     "$build/fuzz/fuzz_$t" $(options "$t") -merge=1 -use_counters=0 -max_len=2048 \
       "$work/$t/merged" "$COMMITTED/$t" "$work/$t/corpus" >"$work/$t/merge.log" 2>&1
     rm -f "$work/$t/merged"/*.nct "$work/$t/merged"/*.json # the seeds (found inputs: hashes)
-    rm -f "$COMMITTED/$t"/*
+    # found inputs are named by their hash; a named file is a regression input kept by hand
+    find "$COMMITTED/$t" -type f -regextype posix-extended -regex '.*/[0-9a-f]{40}' -delete
     find "$work/$t/merged" -type f -exec cp {} "$COMMITTED/$t"/ \;
     echo "$t: $(ls "$COMMITTED/$t" | wc -l) files, $(cat "$COMMITTED/$t"/* 2>/dev/null | wc -c) bytes"
   done
