@@ -13,6 +13,7 @@ namespace {
 using ir::ItemKind;
 using ir::ItemRef;
 
+const ir::Block& only(const Parsed&& p) = delete; // would dangle
 const ir::Block& only(const Parsed& p) {
   EXPECT_TRUE(p.errors().empty()) << p.rendered();
   EXPECT_EQ(p.blocks.size(), 1u);
@@ -48,7 +49,8 @@ TEST_P(NctIrV2, LiteralsKeepTheirTextAndTheFirstNItsDigits) {
 }
 
 TEST_P(NctIrV2, ACommentBeforeTheSkipComesFirst) {
-  const ir::Block& b = only(parse("(A) /2 X1 (B)\n"));
+  const Parsed p = parse("(A) /2 X1 (B)\n"); // kept alive: `b` refers into it
+  const ir::Block& b = only(p);
   EXPECT_EQ(
       ir::items(b),
       (std::vector<ItemRef>{{ItemKind::Comment, 0}, {ItemKind::Word, 0}, {ItemKind::Comment, 1}}));
@@ -66,7 +68,8 @@ TEST(NctIrV2Statements, AStatementIsTheBlocksOnlyStatementInItsPlace) {
 }
 
 TEST(NctIrV2Statements, AnExpressionWordHasNoLiteralText) {
-  const ir::Block& b = only(parseNct("G1 X#1 Y-[#2] M98 <a.nct>\n"));
+  const Parsed p = parseNct("G1 X#1 Y-[#2] M98 <a.nct>\n");
+  const ir::Block& b = only(p);
   ASSERT_EQ(b.words.size(), 5u);
   EXPECT_EQ(b.words[1].text, "");
   EXPECT_EQ(b.words[2].text, "");
