@@ -29,6 +29,7 @@ struct CommonOptions {
   int maxDepth = 16;             // --max-depth: nested calls (the manual's 16)
   std::string printFile;         // --print: DPRNT output (default: standard output)
   bool fanucVacantOrder = false; // --vacant-order fanuc (nct-macro.md §12 Q1)
+  unsigned jobs = 1;             // --jobs: 2 reads on its own thread (the default on 2+ cores)
 };
 
 struct ExpandOptions {

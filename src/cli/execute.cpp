@@ -9,6 +9,7 @@
 #include <iostream>
 #include <unistd.h>
 
+#include "cli/block_pipeline.h"
 #include "diag/codes.h"
 #include "machine/interpreter.h"
 #include "motion/work_frame.h"
@@ -167,16 +168,7 @@ bool executeProgram(Session& s, const CommonOptions& opt, const machine::Setup& 
   machine::Interpreter interp(s.dialect().profile(), setup, sink, s.diags());
   framed.bind(interp);
   limitMachine(interp, opt, programSize(s));
-  ir::Block block;
-  bool ok = true;
-  while (ok && s.source().next(block)) {
-    const std::size_t before = s.diags().errorCount();
-    checker.block(block);
-    if (s.diags().errorCount() != before) break;
-    motion::Provenance from;
-    from.at = block.range.begin;
-    if (!interp.execute(block, from)) break;
-  }
+  runBlocks(StreamStages{s.source(), checker, interp, s.diags()}, opt.jobs);
   if (s.diags().hasErrors()) return false;
   if (!interp.ended()) {
     // drain the rest for static errors (GOTO targets, loops) only when the program ran out

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <iostream>
 
+#include "cli/block_pipeline.h"
 #include "cli/commands.h"
 #include "dialect/dialect.h"
 
@@ -16,6 +17,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "gcx 0.1.0");
 
   CommonOptions common;
+  common.jobs = gcx::cli::defaultJobs();
   // a whole number of 1 or more: no sign, no fraction (CLI11 would wrap -1 around)
   const CLI::Validator atLeastOne(
       [](std::string& v) -> std::string {
@@ -54,6 +56,10 @@ int main(int argc, char** argv) {
     cmd->add_option("--max-depth", common.maxDepth, "nested subprogram and macro calls")
         ->check(CLI::Range(1, 1000));
     cmd->add_option("--print", common.printFile, "file for DPRNT/BPRNT output");
+    cmd->add_option("--jobs", common.jobs,
+                    "threads for a program without macros: 2 reads and checks ahead of the "
+                    "interpreter, 1 runs both in one (default: 2 on a machine with 2+ cores)")
+        ->check(CLI::Range(1, 2));
     cmd->add_option_function<std::string>(
            "--vacant-order", [&](const std::string& v) { common.fanucVacantOrder = v == "fanuc"; },
            "how a vacant variable compares in GT/GE/LT/LE: nct (the manual, default) or fanuc")

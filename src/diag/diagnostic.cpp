@@ -7,7 +7,36 @@
 
 namespace gcx::diag {
 
+namespace {
+// One diversion per thread is all a pipeline stage needs.
+thread_local const Engine* tDivertFrom = nullptr;
+thread_local Engine* tDivertTo = nullptr;
+} // namespace
+
+Engine::Divert::Divert(const Engine& from, Engine& to)
+    : savedFrom_(tDivertFrom), savedTo_(tDivertTo) {
+  tDivertFrom = &from;
+  tDivertTo = &to;
+}
+
+Engine::Divert::~Divert() {
+  tDivertFrom = savedFrom_;
+  tDivertTo = savedTo_;
+}
+
+const Engine& Engine::self() const {
+  return tDivertFrom == this ? *tDivertTo : *this;
+}
+
+Engine& Engine::self() {
+  return tDivertFrom == this ? *tDivertTo : *this;
+}
+
 void Engine::report(Diagnostic d) {
+  if (tDivertFrom == this) {
+    tDivertTo->report(std::move(d));
+    return;
+  }
   if (d.severity == Severity::Error) {
     if (errors_ >= errorLimit_) return;
     ++errors_;
@@ -26,7 +55,8 @@ void Engine::report(Diagnostic d) {
 }
 
 Diagnostic* Engine::lastError() {
-  for (auto it = list_.rbegin(); it != list_.rend(); ++it)
+  std::vector<Diagnostic>& list = self().list_;
+  for (auto it = list.rbegin(); it != list.rend(); ++it)
     if (it->severity == Severity::Error) return &*it;
   return nullptr;
 }

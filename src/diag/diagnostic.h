@@ -29,20 +29,42 @@ class Engine {
 public:
   explicit Engine(std::size_t errorLimit = 50) : errorLimit_(errorLimit) {}
 
+  /// While a Divert lives, what its thread reports to (and asks of) `from` goes to `to`
+  /// instead. A pipeline stage collects its own diagnostics this way, and the caller hands
+  /// them on in source order, so a threaded run reports exactly what a sequential one does.
+  class Divert {
+  public:
+    Divert(const Engine& from, Engine& to);
+    ~Divert();
+    Divert(const Divert&) = delete;
+    Divert& operator=(const Divert&) = delete;
+
+  private:
+    const Engine* savedFrom_;
+    Engine* savedTo_;
+  };
+
   void report(Diagnostic d);
   void error(const char* code, SourceRange where, std::string message);
   void warning(const char* code, SourceRange where, std::string message);
 
-  std::size_t errorCount() const { return errors_; }
-  std::size_t warningCount() const { return warnings_; }
-  bool hasErrors() const { return errors_ != 0; }
-  bool limitReached() const { return errors_ >= errorLimit_; }
-  const std::vector<Diagnostic>& all() const { return list_; }
+  std::size_t errorCount() const { return self().errors_; }
+  std::size_t warningCount() const { return self().warnings_; }
+  bool hasErrors() const { return self().errors_ != 0; }
+  bool limitReached() const { return self().errors_ >= errorLimit_; }
+  std::size_t errorLimit() const { return errorLimit_; }
+  const std::vector<Diagnostic>& all() const { return self().list_; }
   /// The last error reported, to chain notes under it (the call chain of a macro run), or null.
   Diagnostic* lastError();
-  void clear() { list_.clear(), errors_ = warnings_ = 0; }
+  void clear() {
+    Engine& e = self();
+    e.list_.clear(), e.errors_ = e.warnings_ = 0;
+  }
 
 private:
+  const Engine& self() const;
+  Engine& self();
+
   std::size_t errorLimit_;
   std::size_t errors_ = 0;
   std::size_t warnings_ = 0;

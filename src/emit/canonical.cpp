@@ -10,21 +10,29 @@ namespace gcx::emit {
 
 using motion::Kind;
 
-namespace {
-std::string num(double v) {
-  return motion::formatDecimal(v, 6);
-}
-
-std::string xyz(const motion::Vec3& p) {
-  return fmt::format("X{} Y{} Z{}", num(p.x()), num(p.y()), num(p.z()));
-}
-
-} // namespace
-
 CanonicalEmitter::CanonicalEmitter(std::ostream& out, CanonicalOptions opt)
     : out_(out), opt_(std::move(opt)) {}
 
-void CanonicalEmitter::line(std::string text, const motion::Event& e) {
+// Each line is composed in line_, whose storage every line reuses, and written with one call:
+// the output budget (--max-output) still sees every line as soon as it is complete.
+void CanonicalEmitter::begin(std::string_view code) {
+  line_.clear();
+  line_ += code;
+}
+
+void CanonicalEmitter::word(char letter, double v) {
+  line_ += ' ';
+  line_ += letter;
+  motion::appendDecimal(line_, v, 6);
+}
+
+void CanonicalEmitter::xyz(const motion::Vec3& p) {
+  word('X', p.x());
+  word('Y', p.y());
+  word('Z', p.z());
+}
+
+void CanonicalEmitter::end(const motion::Event& e) {
   if (!headerDone_) {
     out_ << "(gcx canonical motion: machine frame, mm, absolute; offsets and tool lengths are "
             "in the coordinates)\n"
@@ -39,12 +47,18 @@ void CanonicalEmitter::line(std::string text, const motion::Event& e) {
       chain += fmt::format(", in {}", it->what);
     if (at.line != lastSource_.line || at.file != lastSource_.file || chain != lastChain_) {
       std::string where = opt_.fileName ? opt_.fileName(at.file) : std::string("line");
-      text += fmt::format(" ({}:{}{})", where, at.line, chain);
+      fmt::format_to(std::back_inserter(line_), " ({}:{}{})", where, at.line, chain);
       lastSource_ = at;
       lastChain_ = std::move(chain);
     }
   }
-  out_ << text << '\n';
+  line_ += '\n';
+  out_.write(line_.data(), static_cast<std::streamsize>(line_.size()));
+}
+
+void CanonicalEmitter::line(std::string_view text, const motion::Event& e) {
+  begin(text);
+  end(e);
 }
 
 void CanonicalEmitter::feedMode(const motion::Event& e) {
@@ -60,19 +74,18 @@ void CanonicalEmitter::noteExtraAxes(const motion::Event& e) {
     if (e.extraStart[i] != e.extraEnd[i]) (i < 3 ? rotaryWords_ : parallelWords_) = true;
 }
 
-std::string CanonicalEmitter::extraWords(const motion::Extra& x) const {
-  std::string s;
+void CanonicalEmitter::extraWords(const motion::Extra& x) {
   for (int i = 0; i < 6; ++i)
-    if (i < 3 ? rotaryWords_ : parallelWords_)
-      s += fmt::format(" {}{}", motion::kExtraAxisNames[i], num(x[i]));
-  return s;
+    if (i < 3 ? rotaryWords_ : parallelWords_) word(motion::kExtraAxisNames[i], x[i]);
 }
 
 void CanonicalEmitter::straight(const motion::Event& e, const char* code, const motion::Vec3& to,
                                 const motion::Extra& extraTo, bool withFeed) {
-  std::string s = fmt::format("{} {}{}", code, xyz(to), extraWords(extraTo));
-  if (withFeed) s += " F" + num(e.feed);
-  line(std::move(s), e);
+  begin(code);
+  xyz(to);
+  extraWords(extraTo);
+  if (withFeed) word('F', e.feed);
+  end(e);
 }
 
 void CanonicalEmitter::event(const motion::Event& e) {
@@ -83,7 +96,11 @@ void CanonicalEmitter::event(const motion::Event& e) {
     return;
   case Kind::Feed:
     if (e.lead > 0) { // spindle-synchronised: G33 with the lead per revolution as K
-      line(fmt::format("G33 {}{} K{}", xyz(e.end), extraWords(e.extraEnd), num(e.lead)), e);
+      begin("G33");
+      xyz(e.end);
+      extraWords(e.extraEnd);
+      word('K', e.lead);
+      end(e);
       return;
     }
     feedMode(e);
@@ -113,43 +130,48 @@ void CanonicalEmitter::event(const motion::Event& e) {
     const motion::Vec3 d = e.center - e.start;
     const motion::PlaneAxes ax = motion::axesOf(e.plane);
     static const char letters[] = {'I', 'J', 'K'};
-    std::string s =
-        fmt::format("{} {}{}", e.clockwise ? "G2" : "G3", xyz(e.end), extraWords(e.extraEnd));
+    begin(e.clockwise ? "G2" : "G3");
+    xyz(e.end);
+    extraWords(e.extraEnd);
     for (int a : {0, 1, 2})
-      if (a == ax.first || a == ax.second) s += fmt::format(" {}{}", letters[a], num(d[a]));
-    if (e.turns > 0) s += fmt::format(" P{}", e.turns + 1);
-    s += " F" + num(e.feed);
-    line(std::move(s), e);
+      if (a == ax.first || a == ax.second) word(letters[a], d[a]);
+    if (e.turns > 0) fmt::format_to(std::back_inserter(line_), " P{}", e.turns + 1);
+    word('F', e.feed);
+    end(e);
     return;
   }
   case Kind::Dwell: {
     double seconds = e.value;
     if (e.perRevolution) {
       if (spindleSpeed_ <= 0) {
-        line(fmt::format("(dwell of {} revolutions with the spindle stopped)", num(e.value)), e);
+        line(fmt::format("(dwell of {} revolutions with the spindle stopped)",
+                         motion::formatDecimal(e.value, 6)),
+             e);
         return;
       }
       seconds = e.value * 60.0 / spindleSpeed_;
     }
-    line("G4 P" + num(seconds), e);
+    begin("G4");
+    word('P', seconds);
+    end(e);
     return;
   }
   case Kind::Spindle:
     spindleSpeed_ = e.value;
-    line(fmt::format("S{} {}", num(e.value),
+    line(fmt::format("S{} {}", motion::formatDecimal(e.value, 6),
                      e.direction > 0   ? "M3"
                      : e.direction < 0 ? "M4"
                                        : "M5"),
          e);
     return;
   case Kind::SpindleOrient: // LinuxCNC acts on M19 only with R (a bare M19 is ignored)
-    line(fmt::format("M19 R{}", num(e.value)), e);
+    line(fmt::format("M19 R{}", motion::formatDecimal(e.value, 6)), e);
     return;
   case Kind::ToolChange:
-    line(fmt::format("T{} M6", num(e.value)), e);
+    line(fmt::format("T{} M6", motion::formatDecimal(e.value, 6)), e);
     return;
   case Kind::Coolant:
-    line(fmt::format("M{}", num(e.value)), e);
+    line(fmt::format("M{}", motion::formatDecimal(e.value, 6)), e);
     return;
   case Kind::Stop:
     line(e.optional ? "M1" : "M0", e);

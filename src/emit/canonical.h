@@ -8,6 +8,7 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <string_view>
 
 #include "motion/event.h"
 #include "motion/interpolator.h"
@@ -27,12 +28,16 @@ public:
   void finish() override;
 
 private:
-  void line(std::string text, const motion::Event& e);
+  void begin(std::string_view code);
+  void word(char letter, double v);
+  void xyz(const motion::Vec3& p);
+  void end(const motion::Event& e);
+  void line(std::string_view text, const motion::Event& e);
   void feedMode(const motion::Event& e);
   void straight(const motion::Event& e, const char* code, const motion::Vec3& to,
                 const motion::Extra& extraTo, bool withFeed);
   void noteExtraAxes(const motion::Event& e);
-  std::string extraWords(const motion::Extra& x) const;
+  void extraWords(const motion::Extra& x);
 
   std::ostream& out_;
   CanonicalOptions opt_;
@@ -44,6 +49,7 @@ private:
   double spindleSpeed_ = 0;
   SourceLoc lastSource_;
   std::string lastChain_;
+  std::string line_; // the line being composed
 };
 
 } // namespace gcx::emit

@@ -3,10 +3,70 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 
 namespace gcx::motion {
 
+namespace {
+constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9};
+constexpr std::uint64_t kPow10Int[] = {1,      10,      100,      1000,      10000,
+                                       100000, 1000000, 10000000, 100000000, 1000000000};
+
+// v scaled to `decimals` places and rounded as an integer, when that integer is certainly the
+// correctly rounded value to_chars prints. Below 1e12 the product v * 10^d is within 1.2e-4 of
+// the exact one, so unless it lies within 1e-3 of a half both round to the same integer.
+bool scaledInteger(double v, int decimals, std::int64_t& out) {
+  if (decimals < 0 || decimals > 9) return false;
+  const double scaled = v * kPow10[decimals];
+  if (!(std::fabs(scaled) < 1e12)) return false;
+  const double frac = scaled - std::floor(scaled);
+  if (std::fabs(frac - 0.5) < 1e-3) return false;
+  out = std::llround(scaled);
+  return true;
+}
+
+// Digits of n, most significant first, into the end of buf; returns the first digit.
+char* writeDigits(std::uint64_t n, char* end) {
+  do {
+    *--end = static_cast<char>('0' + n % 10);
+    n /= 10;
+  } while (n != 0);
+  return end;
+}
+
+void appendScaled(std::string& out, std::int64_t r, int decimals) {
+  char buf[32];
+  char* const end = buf + sizeof buf;
+  char* p = end;
+  std::uint64_t m = r < 0 ? static_cast<std::uint64_t>(-r) : static_cast<std::uint64_t>(r);
+  std::uint64_t frac = m % kPow10Int[decimals];
+  const std::uint64_t whole = m / kPow10Int[decimals];
+  int places = decimals;
+  while (places > 0 && frac % 10 == 0) { // trailing zeros are dropped
+    frac /= 10;
+    --places;
+  }
+  if (places > 0) {
+    for (int i = 0; i < places; ++i, frac /= 10)
+      *--p = static_cast<char>('0' + frac % 10);
+    *--p = '.';
+  }
+  p = writeDigits(whole, p);
+  if (r < 0) *--p = '-'; // r == 0 is "0": a rounded -0 has no sign
+  out.append(p, end);
+}
+} // namespace
+
 void appendDecimal(std::string& out, double v, int decimals) {
+  std::int64_t scaled = 0;
+  if (scaledInteger(v, decimals, scaled)) {
+    appendScaled(out, scaled, decimals);
+    return;
+  }
+  appendDecimalExact(out, v, decimals);
+}
+
+void appendDecimalExact(std::string& out, double v, int decimals) {
   if (!std::isfinite(v)) {
     out += "null";
     return;

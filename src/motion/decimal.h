@@ -8,6 +8,9 @@ namespace gcx::motion {
 /// Appends v rounded to at most `decimals` (0..17) places. Non-finite values are written as
 /// "null", which keeps JSON output valid; callers that cannot accept it must check first.
 void appendDecimal(std::string& out, double v, int decimals = 6);
+/// The same text by std::to_chars alone; appendDecimal takes an integer fast path where it can
+/// prove the result equal (tests compare the two).
+void appendDecimalExact(std::string& out, double v, int decimals = 6);
 std::string formatDecimal(double v, int decimals = 6);
 
 } // namespace gcx::motion
