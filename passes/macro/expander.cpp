@@ -1,5 +1,7 @@
 #include "passes/macro/expander.h"
 
+#include <array>
+
 #include <fmt/format.h>
 #include <fstream>
 
@@ -115,24 +117,57 @@ bool Expander::step() {
   return ncBlock(f, b);
 }
 
+// One pass over the bytes, in bounded chunks: a table folds case and picks the bytes that may
+// start a marker, so a plain CAM program costs one table lookup per byte.
 bool mayNeedExpansion(const std::string& path, const Profile& profile) {
   if (!profile.controlFlow) return false;
-  const ControlFlow& flow = *profile.controlFlow;
+  const std::vector<std::string>& markers = profile.controlFlow->expansionMarkers;
+  std::array<unsigned char, 256> fold{};
+  for (unsigned c = 0; c < 256; ++c)
+    fold[c] = static_cast<unsigned char>(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
+  // per folded byte: 1 ends the scan ('#', '[': an expression only the expansion pass
+  // evaluates), 2 may start a marker
+  std::array<unsigned char, 256> interest{};
+  interest['#'] = interest['['] = 1;
+  std::size_t longest = 1;
+  for (const std::string& m : markers)
+    if (!m.empty()) {
+      interest[fold[static_cast<unsigned char>(m[0])]] |= 2;
+      longest = std::max(longest, m.size());
+    }
+  auto markerAt = [&](const std::string& text, std::size_t i) {
+    for (const std::string& m : markers) {
+      if (m.empty() || i + m.size() > text.size()) continue;
+      std::size_t k = 0;
+      while (k < m.size() && fold[static_cast<unsigned char>(text[i + k])] ==
+                                 fold[static_cast<unsigned char>(m[k])])
+        ++k;
+      if (k == m.size()) return true;
+    }
+    return false;
+  };
   std::ifstream in(path, std::ios::binary);
-  std::string chunk(1 << 16, '\0');
-  std::string carry;
-  while (in) {
-    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
-    std::string text = carry + chunk.substr(0, static_cast<std::size_t>(in.gcount()));
-    for (char& c : text)
-      c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    // '[': an expression, which only the expansion pass evaluates
-    if (text.find_first_of("#[") != std::string::npos) return true;
-    for (const std::string& m : flow.expansionMarkers)
-      if (text.find(m) != std::string::npos) return true;
-    carry = text.size() > 8 ? text.substr(text.size() - 8) : text;
+  std::string text; // the unscanned tail of the last chunk, then the next chunk
+  std::size_t kept = 0;
+  constexpr std::size_t kChunk = 1 << 16;
+  for (;;) {
+    text.resize(kept + kChunk);
+    in.read(text.data() + kept, static_cast<std::streamsize>(kChunk));
+    const auto got = static_cast<std::size_t>(in.gcount());
+    text.resize(kept + got);
+    const bool last = got < kChunk;
+    // a marker that may run past the chunk waits for the next one
+    const std::size_t scanEnd = last ? text.size() : text.size() - (longest - 1);
+    for (std::size_t i = 0; i < scanEnd; ++i) {
+      const unsigned char k = interest[fold[static_cast<unsigned char>(text[i])]];
+      if (k == 0) continue;
+      if (k & 1) return true;
+      if (markerAt(text, i)) return true;
+    }
+    if (last) return false;
+    text.erase(0, scanEnd);
+    kept = text.size();
   }
-  return false;
 }
 
 } // namespace gcx::macro
