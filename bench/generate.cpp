@@ -3,6 +3,8 @@
 //   holes   a G83 drilling cycle repeated at about LINES positions
 //   macro   an NCT WHILE loop that emits LINES G1 blocks (the macro expansion pass)
 //   oword   the same loop for LinuxCNC (o100 while ... o100 endwhile), for rs274
+//   exprs   LINES blocks of assignments and bracketed expressions, none of them fit for the
+//           fast path: the rate of the ANTLR grammar path (gcx check)
 //   g83     LINES holes of one G83 peck cycle (Q5, E0.254 so the clearance equals LinuxCNC's
 //           fixed 0.254 mm), starting above R (G98 to the initial level Z10)
 //   g83ngc  the same holes for LinuxCNC: identical text without the E word, which rs274 rejects
@@ -13,7 +15,7 @@
 
 int main(int argc, char** argv) {
   if (argc != 3) {
-    std::fprintf(stderr, "usage: gcx-bench-gen lines|holes|macro|oword|g83|g83ngc LINES\n");
+    std::fprintf(stderr, "usage: gcx-bench-gen lines|holes|macro|oword|exprs|g83|g83ngc LINES\n");
     return 2;
   }
   const std::string kind = argv[1];
@@ -46,6 +48,15 @@ int main(int argc, char** argv) {
     for (long i = 4; i < n - 1; ++i)
       std::printf("X%.3f Y%.3f\n", (i % 1000) * 0.5, (i / 1000) * 0.5);
     std::printf("G80\n");
+  } else if (kind == "exprs") {
+    // straight-line macro text: every block goes through the grammar
+    for (long i = 3; i < n - 1; ++i) {
+      if (i % 2 == 0)
+        std::printf("#%ld=[#%ld+%ld.5]*2/[1+SIN[%ld]]\n", 100 + i % 50, 100 + (i + 7) % 50, i % 97,
+                    i % 360);
+      else
+        std::printf("G1 X[#%ld MOD 200] Y[[%ld MOD 200]-100] F1000\n", 100 + i % 50, i);
+    }
   } else if (kind == "macro" || kind == "oword") {
     // LINES G1 blocks from one loop: a raster of 1 mm steps, X and Y in -100..99 mm
     const char* move = "G1 X[[#1MOD200]-100] Y[[FIX[#1/200]MOD200]-100] F1000";

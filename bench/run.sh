@@ -7,7 +7,7 @@
 # The drilling section expands a G83 peck cycle at HOLES (default 100000) positions to canonical
 # G0/G1 (lines/s counts source blocks, and separately canonical lines emitted), and runs the
 # equivalent RS274 program (without NCT's E word) through rs274.
-#   usage: bench/run.sh BUILD_DIR [LINES]      (environment: HOLES=100000)
+#   usage: bench/run.sh BUILD_DIR [LINES]   (environment: HOLES=100000, RSS_LINES=10000000)
 set -euo pipefail
 build=${1:-build}
 lines=${2:-1000000}
@@ -46,7 +46,23 @@ echo "== canonical expansion (parse, interpret, emit)"
 measure "gcx expand --to canonical ($lines lines)" "$lines" \
   "$gcx" expand "$work/lines.nct" --to canonical -o "$work/out.ngc"
 gcx_secs=$(cat "$work/last")
+measure "gcx expand --to canonical ($lines lines, --jobs 1)" "$lines" \
+  "$gcx" expand "$work/lines.nct" --to canonical --jobs 1 -o "$work/out1.ngc"
+cmp -s "$work/out.ngc" "$work/out1.ngc" || { echo "--jobs 1 and --jobs 2 wrote different files"; exit 1; }
 measure "gcx run --stats ($lines lines)" "$lines" "$gcx" run "$work/lines.nct" --stats
+
+echo "== memory: peak RSS must not grow with the program (RSS_LINES=${RSS_LINES:=10000000})"
+for n in 100000 "$RSS_LINES"; do
+  "$gen" lines "$n" > "$work/rss.nct"
+  measure "gcx expand --to canonical ($n lines)" "$n" \
+    "$gcx" expand "$work/rss.nct" --to canonical -o "$work/rss.ngc"
+  rm -f "$work/rss.nct" "$work/rss.ngc"
+done
+
+echo "== the grammar path: $lines blocks of macro expressions (none fit for the fast path)"
+"$gen" exprs "$lines" > "$work/exprs.nct"
+measure "gcx check (expressions, $lines lines)" "$lines" "$gcx" check "$work/exprs.nct"
+rm -f "$work/exprs.nct"
 
 echo "== equivalence: the program against its canonical output, each run in its own thread"
 # the canonical output under an .nct name: gcx reads it itself, streaming (as .ngc it would go
