@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "cli/commands.h"
+#include "cli/equiv_program.h"
 #include "cli/execute.h"
 #include "cli/session.h"
 #include "equiv/equiv.h"
@@ -21,7 +22,7 @@ int runEquiv(const std::string& a, const std::string& b, const EquivCommandOptio
       opt.setupB == "none" ? std::string() : (opt.setupB.empty() ? opt.setup : opt.setupB);
   equiv::ProgramInput ib{b, setupB, equiv::ProgramInput::Reader::Auto};
   equiv::EquivOptions o;
-  o.common = opt.common;
+  o.gcxProgram = gcxProgramMaker(opt.common);
   o.walk.tolerance = opt.tolerance;
   o.walk.strictRapids = opt.strictRapids;
   o.rs274 = opt.rs274;

@@ -8,10 +8,6 @@
 
 namespace gcx::cli {
 
-void reportUsage(const std::string& message) {
-  std::cerr << "gcx: error: " << message << '\n';
-}
-
 bool Session::open(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {

@@ -41,7 +41,6 @@ private:
   std::unique_ptr<BlockSource> source_;
 };
 
-/// Prints an I/O or usage problem in the diagnostics' format.
-void reportUsage(const std::string& message);
+using diag::reportUsage; // an I/O or usage problem, in the diagnostics' format
 
 } // namespace gcx::cli

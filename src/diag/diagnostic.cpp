@@ -1,6 +1,7 @@
 #include "diag/diagnostic.h"
 
 #include <fmt/format.h>
+#include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "diag/codes.h"
@@ -52,6 +53,10 @@ void Engine::report(Diagnostic d) {
   }
   if (d.severity == Severity::Warning) ++warnings_;
   list_.push_back(std::move(d));
+}
+
+void reportUsage(const std::string& message) {
+  std::cerr << "gcx: error: " << message << '\n';
 }
 
 Diagnostic* Engine::lastError() {

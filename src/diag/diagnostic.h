@@ -71,6 +71,10 @@ private:
   std::vector<Diagnostic> list_;
 };
 
+/// Prints a problem that has no place in a program (a file that cannot be opened, a usage
+/// error) on standard error: `gcx: error: message`.
+void reportUsage(const std::string& message);
+
 /// `file:line:col: error: message [code]`, the source line and a caret under the column.
 std::string renderText(const Diagnostic& d, const SourceManager& sm);
 /// A JSON array of all diagnostics, for tools (`--json`).

@@ -8,8 +8,6 @@
 #include <sstream>
 #include <thread>
 
-#include "cli/execute.h"
-#include "cli/session.h"
 #include "diag/codes.h"
 #include "equiv/event_queue.h"
 #include "equiv/ngc_subset.h"
@@ -63,27 +61,20 @@ std::string oneLine(std::string s) {
   return s;
 }
 
-/// A stream that discards what it is given (DPRNT output of a compared program).
-class NullBuffer : public std::streambuf {
-protected:
-  int overflow(int c) override { return c; }
-};
-
-/// One program being read: by gcx's interpreter (a Session) or by rs274 (its text).
+/// One program being read: by gcx's interpreter (the caller's GcxProgram) or by rs274 (its
+/// text).
 class Side : public ProgramSide {
 public:
   Side(const ProgramInput& in, const EquivOptions& o, motion::Sink* tap)
-      : in_(in), o_(o), sink_(queue_, tap), null_(&nullBuffer_) {}
+      : in_(in), o_(o), sink_(queue_, tap) {}
 
   const std::string& name() const override { return in_.path; }
-  const SourceManager& sources() const override {
-    return session_ ? session_->sources() : sources_;
-  }
+  const SourceManager& sources() const override { return gcx_ ? gcx_->sources() : sources_; }
   const std::vector<diag::Diagnostic>& diagnostics() const override {
-    return session_ ? session_->diags().all() : diags_.all();
+    return gcx_ ? gcx_->diags().all() : diags_.all();
   }
   EventQueue& queue() { return queue_; }
-  double rapidRate() const { return setup_.rapidRate; }
+  double rapidRate() const { return gcx_ ? gcx_->setup().rapidRate : setup_.rapidRate; }
   bool ok() const { return ok_; }
   bool readByRs274() const { return rs274_; }
 
@@ -95,14 +86,12 @@ public:
              (in_.reader == ProgramInput::Reader::Auto && ngc &&
               oracle::findRs274(o_.rs274).has_value());
     if (rs274_) return prepareRs274();
-    cli::CommonOptions common = o_.common;
-    if (ngc && common.dialect.empty()) common.dialect = "nct"; // the canonical subset
-    session_ = std::make_unique<cli::Session>(common);
-    if (cli::openWithSetup(*session_, in_.path, in_.setup, setup_) != cli::Ok) return false;
+    gcx_ = o_.gcxProgram();
+    if (!gcx_->open(in_.path, in_.setup, ngc)) return false;
     if (ngc) {
       std::string text;
       if (!readText(in_.path, text)) return false;
-      if (!checkCanonicalSubset(text, session_->file(), session_->diags())) {
+      if (!checkCanonicalSubset(text, gcx_->file(), gcx_->diags())) {
         ok_ = false;
         return true; // reported with the other diagnostics
       }
@@ -117,7 +106,7 @@ public:
       } else if (rs274_) {
         ok_ = produceRs274();
       } else {
-        ok_ = cli::executeProgram(*session_, o_.common, setup_, sink_, null_);
+        ok_ = gcx_->run(sink_);
         if (!ok_) sink_.flush(); // the motion before the error still counts
       }
     } catch (const Cancelled&) {
@@ -129,7 +118,7 @@ public:
 private:
   bool prepareRs274() {
     if (!readText(in_.path, text_)) {
-      cli::reportUsage(fmt::format("{}: cannot open [{}]", in_.path, diag::code::CannotRead));
+      diag::reportUsage(fmt::format("{}: cannot open [{}]", in_.path, diag::code::CannotRead));
       return false;
     }
     file_ = sources_.addBuffer(in_.path, text_);
@@ -145,13 +134,13 @@ private:
     if (!in_.setup.empty()) {
       std::string setupText, error;
       if (!readText(in_.setup, setupText)) {
-        cli::reportUsage(
+        diag::reportUsage(
             fmt::format("{}: cannot open [{}]", in_.setup, diag::code::SetupCannotRead));
         return false;
       }
       oracle::OracleSetup s;
       if (!oracle::parseSetupJson(setupText, s, error)) {
-        cli::reportUsage(
+        diag::reportUsage(
             fmt::format("{}: {} (rs274 takes work offsets G54-G59 and tools)", in_.setup, error));
         return false;
       }
@@ -214,14 +203,12 @@ private:
   const EquivOptions& o_;
   EventQueue queue_;
   QueueSink sink_;
-  NullBuffer nullBuffer_;
-  std::ostream null_;
   bool rs274_ = false;
   bool ok_ = true;
-  machine::Setup setup_;
   // gcx's reading
-  std::unique_ptr<cli::Session> session_;
+  std::unique_ptr<GcxProgram> gcx_;
   // rs274's reading
+  machine::Setup setup_; // the rapid rate of the setup, as gcx reads it
   SourceManager sources_;
   diag::Engine diags_;
   std::string text_;

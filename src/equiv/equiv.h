@@ -4,16 +4,33 @@
 // comparison walks both event streams as they come, so memory does not grow with the program.
 // `gcx translate --verify` calls the same check.
 #pragma once
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "cli/commands.h"
 #include "diag/diagnostic.h"
 #include "equiv/result.h"
 #include "equiv/walker.h"
+#include "machine/setup.h"
 
 namespace gcx::equiv {
+
+/// A program on gcx's side of a comparison: opened and run by the caller's machinery (the
+/// command line's session, its options and limits), so this folder depends on none of it.
+class GcxProgram {
+public:
+  virtual ~GcxProgram() = default;
+  /// Opens the program and its machine setup (empty: defaults); false when it cannot, with the
+  /// problem printed. `canonicalSubset`: an RS274/NGC file gcx reads as canonical motion.
+  virtual bool open(const std::string& path, const std::string& setup, bool canonicalSubset) = 0;
+  virtual FileId file() const = 0;
+  virtual const machine::Setup& setup() const = 0;
+  virtual const SourceManager& sources() const = 0;
+  virtual diag::Engine& diags() = 0;
+  /// Runs the whole program into the sink; false on an error (in diags()).
+  virtual bool run(motion::Sink& sink) = 0;
+};
 
 struct ProgramInput {
   std::string path;
@@ -25,7 +42,8 @@ struct ProgramInput {
 
 struct EquivOptions {
   WalkOptions walk;
-  cli::CommonOptions common;   // the gcx side's execution options (--lib, limits, ...)
+  /// Makes the gcx side's program (with the caller's options: --lib, limits, ...).
+  std::function<std::unique_ptr<GcxProgram>()> gcxProgram;
   std::string rs274 = "rs274"; // executable: a path, or a name looked up in PATH
   double rs274TimeoutSeconds = 600;
   motion::Sink* tapA = nullptr; // receives every event of A, on A's thread

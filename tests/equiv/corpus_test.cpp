@@ -15,6 +15,7 @@
 #include "equiv/report.h"
 #include "motion/geometry.h"
 #include "oracle/rs274.h"
+#include "support/equiv_support.h"
 #include "support/test_support.h"
 
 namespace gcx::test {
@@ -29,7 +30,7 @@ fs::path scratch() {
 }
 
 equiv::EquivOutcome check(const ProgramInput& a, const ProgramInput& b) {
-  return equiv::checkEquivalence(a, b, equiv::EquivOptions{});
+  return equiv::checkEquivalence(a, b, equivOptions());
 }
 
 /// The report, or the diagnostics when a side could not run.
@@ -180,7 +181,7 @@ TEST(EquivTap, SeesEveryEventOfItsSide) {
     }
     void finish() override { finished = true; }
   } ta, tb;
-  equiv::EquivOptions opt;
+  equiv::EquivOptions opt = equivOptions();
   opt.tapA = &ta;
   opt.tapB = &tb;
   const std::string program = (examples() / "O1001.nct").string();

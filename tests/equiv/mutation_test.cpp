@@ -9,6 +9,7 @@
 
 #include "equiv/equiv.h"
 #include "equiv/report.h"
+#include "support/equiv_support.h"
 #include "support/test_support.h"
 
 namespace gcx::test {
@@ -132,7 +133,7 @@ TEST_P(EquivMutation, JudgedDifferentAtTheMutatedLine) {
   const ProgramInput a{(sourceDir() / m.dir / (std::string(m.main) + ".nct")).string(), setupOf(m),
                        ProgramInput::Reader::Gcx};
   const ProgramInput b{mutated.string(), setupOf(m), ProgramInput::Reader::Gcx};
-  const equiv::EquivOutcome o = equiv::checkEquivalence(a, b, equiv::EquivOptions{});
+  const equiv::EquivOutcome o = equiv::checkEquivalence(a, b, equivOptions());
   fs::remove_all(dir);
   ASSERT_TRUE(o.ok) << m;
   ASSERT_FALSE(o.result.equivalent) << m;
@@ -226,7 +227,7 @@ TEST_P(EquivSameMotion, JudgedEquivalent) {
   const ProgramInput a{(sourceDir() / m.dir / (std::string(m.main) + ".nct")).string(), setupOf(m),
                        ProgramInput::Reader::Gcx};
   const ProgramInput b{changed.string(), setupOf(m), ProgramInput::Reader::Gcx};
-  const equiv::EquivOutcome o = equiv::checkEquivalence(a, b, equiv::EquivOptions{});
+  const equiv::EquivOutcome o = equiv::checkEquivalence(a, b, equivOptions());
   fs::remove_all(dir);
   ASSERT_TRUE(o.ok) << m;
   EXPECT_TRUE(o.result.equivalent) << m << "\n" << equiv::renderText(o, 0.001);
