@@ -83,6 +83,7 @@ MachineRules machineRules() {
   r.compensation.breakerMCodes = {MAction::Stop, MAction::OptionalStop, MAction::End,
                                   MAction::EndRewind};
   r.compensation.lengthWordBreaks = true;
+  r.contour = {",C", ",R", ",A"}; // chapter 17 (nct.md §4)
   return r;
 }
 

@@ -63,6 +63,11 @@ inline constexpr const char* CompRadiusTooLarge = "GCX070"; // tool radius >= an
 inline constexpr const char* CompPlaneChange = "GCX071";    // G17/G18/G19 while compensating
 inline constexpr const char* CompStartInArc = "GCX072";     // G41/G42 start-up in G2/G3
 inline constexpr const char* CompNoRegister = "GCX073";     // D names no radius register
+// --- machine: automatic contour geometry (nct.md §4)
+inline constexpr const char* ChamferAndRounding = "2082"; // ,C and ,R in one block
+inline constexpr const char* IllegalChamfer = "2085";     // no plane element before or after
+inline constexpr const char* ChamferTooBig = "GCX074";    // does not fit on the elements
+inline constexpr const char* AngleLine = "GCX075";        // ,A outside a one-coordinate G0/G1
 // --- gcx: execution
 inline constexpr const char* NotImplemented = "GCX030";
 inline constexpr const char* UnknownGCodeAtRun = "GCX031";

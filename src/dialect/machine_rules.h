@@ -120,6 +120,12 @@ struct CompensationRules {
   bool lengthWordBreaks = false;      // a tool length word (H) likewise
 };
 
+/// The words of the automatic contour geometry (nct.md §4): a chamfer or a rounding between a
+/// block and the next, and the direction angle of a line. Empty: the dialect has none.
+struct ContourWords {
+  std::string chamfer, rounding, angle;
+};
+
 /// What the machine model follows for a dialect, beside its code tables.
 struct MachineRules {
   std::vector<SettingSpec> settings;
@@ -145,6 +151,7 @@ struct MachineRules {
   std::vector<std::string> workOffsetNames;
   std::string extendedWorkOffsetPrefix;
   CompensationRules compensation;
+  ContourWords contour;
 
   const SettingSpec* setting(Setting s) const;
   const MCodeSpec* mcode(int code) const;

@@ -171,8 +171,16 @@ void Interpreter::emit(motion::Event e) {
     stopped_ = true;
     return;
   }
-  if (!comp_.event(e, *sink_)) {
-    compensationFailed();
+  // chamfers and roundings, then radius compensation, then the sink
+  struct ToCompensation : motion::Sink {
+    CompensationStage& comp;
+    motion::Sink& out;
+    bool ok = true;
+    ToCompensation(CompensationStage& c, motion::Sink& o) : comp(c), out(o) {}
+    void event(const motion::Event& x) override { ok = comp.event(x, out) && ok; }
+  } toCompensation(comp_, *sink_);
+  if (!corners_.event(e, toCompensation) || !toCompensation.ok) {
+    compensationFailed(corners_.failure() ? *corners_.failure() : *comp_.failure());
     stopped_ = true;
     return;
   }
@@ -873,7 +881,8 @@ bool Interpreter::move(const BlockWords& w) {
     program_[ax.second] = hole[ax.second];
     return true;
   }
-  const Vec3 to = target(w, true);
+  Vec3 to = target(w, true);
+  if (!contourGeometry(w, to)) return false;
   const motion::Extra extraTo = extraTarget(w);
   switch (state_.motion) {
   case GAction::Rapid:

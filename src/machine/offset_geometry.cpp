@@ -165,4 +165,74 @@ CornerResult corner(const Path2& first, const Path2& second, double dFirst, doub
   return out;
 }
 
+namespace {
+
+/// Swept angle from a to b about c in the arc's direction, in [0, 2π).
+double sweepTo(const Path2& arc, const Vec2& a, const Vec2& b) {
+  double s = std::atan2(cross(a - arc.c, b - arc.c), (a - arc.c).dot(b - arc.c));
+  if (!arc.ccw) s = -s;
+  return s < -kEps ? s + 2 * M_PI : std::max(s, 0.0);
+}
+
+/// `t` lies on the element between its start and its end.
+bool onElement(const Path2& p, const Vec2& t) {
+  if (!p.arc) {
+    const Vec2 u = p.b - p.a;
+    const double s = (t - p.a).dot(u);
+    return s >= -kEps && s <= u.squaredNorm() + kEps;
+  }
+  const double whole = p.a == p.b ? 2 * M_PI : sweepTo(p, p.a, p.b);
+  return sweepTo(p, p.a, t) <= whole + 1e-9;
+}
+
+/// The point of the element at distance (chord) `c` from the corner: before it on the first
+/// element, after it on the second.
+std::optional<Vec2> atChord(const Path2& p, const Vec2& corner, double c, bool before) {
+  const Vec2 t = tangentAt(p, before);
+  if (!p.arc) return corner + (before ? -c : c) * t;
+  Path2 ring = p;
+  ring.a = ring.b = corner + Vec2(c, 0);
+  ring.c = corner;
+  for (const Vec2& x : intersections(p, ring))
+    if ((x - corner).dot(t) * (before ? -1 : 1) > 0) return x;
+  return std::nullopt;
+}
+
+Vec2 footOn(const Path2& p, const Vec2& x) {
+  if (!p.arc) {
+    const Vec2 u = (p.b - p.a).normalized();
+    return p.a + u * u.dot(x - p.a);
+  }
+  return p.c + (x - p.c).normalized() * (p.a - p.c).norm();
+}
+
+} // namespace
+
+Blend chamfer(const Path2& first, const Path2& second, double c) {
+  Blend out;
+  const auto a = atChord(first, first.b, c, true), b = atChord(second, first.b, c, false);
+  out.fits = a && b && onElement(first, *a) && onElement(second, *b);
+  if (out.fits) out.endFirst = *a, out.startSecond = *b;
+  return out;
+}
+
+Blend rounding(const Path2& first, const Path2& second, double r) {
+  Blend out;
+  const Vec2 p = first.b;
+  const double turn = cross(tangentAt(first, true), tangentAt(second, false));
+  const auto offA = offsetPath(first, turn > 0 ? r : -r);
+  const auto offB = offsetPath(second, turn > 0 ? r : -r);
+  const auto centre = std::fabs(turn) > kEps && offA && offB
+                          ? nearest(intersections(*offA, *offB), p)
+                          : std::nullopt;
+  if (!centre) return out.fits = false, out;
+  out.arc = true;
+  out.ccw = turn > 0;
+  out.centre = *centre;
+  out.endFirst = footOn(first, *centre);
+  out.startSecond = footOn(second, *centre);
+  out.fits = onElement(first, out.endFirst) && onElement(second, out.startSecond);
+  return out;
+}
+
 } // namespace gcx::machine::comp

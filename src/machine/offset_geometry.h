@@ -60,4 +60,16 @@ struct CornerResult {
 CornerResult corner(const Path2& first, const Path2& second, double dFirst, double dSecond,
                     Join join, OuterCorner rule, const std::optional<Vec2>& virtualDir = {});
 
+/// A chamfer or rounding between two elements meeting at a corner (nct.md §4.1): the first
+/// element ends at `endFirst`, a line (or an arc about `centre`) joins `startSecond`.
+struct Blend {
+  Vec2 endFirst = Vec2::Zero(), startSecond = Vec2::Zero(), centre = Vec2::Zero();
+  bool arc = false, ccw = true;
+  bool fits = true; // false: the chamfer or rounding is too big for the elements
+};
+/// Chamfer: `c` from the corner on each element (on an arc, the chord from the corner).
+Blend chamfer(const Path2& first, const Path2& second, double c);
+/// Rounding: an arc of radius r tangent to both elements, on the inside of the turn.
+Blend rounding(const Path2& first, const Path2& second, double r);
+
 } // namespace gcx::machine::comp

@@ -19,8 +19,7 @@ CompensationStage::Options Interpreter::compensationOptions() const {
   return o;
 }
 
-bool Interpreter::compensationFailed() {
-  const CompensationFailure& f = *comp_.failure();
+bool Interpreter::compensationFailed(const CompensationFailure& f) {
   diag::Diagnostic d{diag::Severity::Error, f.code, f.message, SourceRange{f.at.at, 1}, {}};
   for (auto it = f.at.chain.rbegin(); it != f.at.chain.rend(); ++it)
     d.notes.push_back({SourceRange{it->call, 1}, "in " + it->what});
@@ -31,7 +30,7 @@ bool Interpreter::compensationFailed() {
 bool Interpreter::radiusCompensation(const BlockWords& w, const ModalState& before) {
   const bool on = state_.radiusComp != GAction::RadiusCompOff;
   if (!on && !comp_.engaged()) return true;
-  if (!comp_.beginBlock(*sink_)) return compensationFailed();
+  if (!comp_.beginBlock(*sink_)) return compensationFailed(*comp_.failure());
   const motion::PlaneAxes ax = motion::axesOf(state_.plane);
   const bool arcMode = state_.motion == GAction::ArcCW || state_.motion == GAction::ArcCCW;
   const bool planeWords = axisGiven(w, ax.first) || axisGiven(w, ax.second);
@@ -92,7 +91,7 @@ bool Interpreter::radiusCompensation(const BlockWords& w, const ModalState& befo
                                     rules.breakerMCodes.end());
   }
   if (breaks) comp_.breakLookAhead(*sink_);
-  if (comp_.failure()) return compensationFailed();
+  if (comp_.failure()) return compensationFailed(*comp_.failure());
   comp_.setMode(state_.plane, side, radius, direction);
   // in-plane words without in-plane displacement (nct.md §3.17.1, 000:7625-7641)
   if (on && planeWords && !arcMode && !startWord) {

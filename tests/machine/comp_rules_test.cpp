@@ -31,8 +31,8 @@ TEST(CompNctSpec_3_15, MirrorSwapsTheSide) {
   ASSERT_TRUE(r.errors.empty()) << r.rendered;
   EXPECT_EQ(compMotion(r.motion()),
             (V{"R 10,0,0", "L 0,1,0 F100", "L -20,1,0 F100", "L -21,1,0 F100",
-               "L -21.2127,-0.7276,0 F100", "L -20.2425,-0.9701,0 F100",
-               "L -0.2425,-5.9701,0 F100", "L 0,-20,0 F100"}));
+               "L -21.2127,-0.7276,0 F100", "L -20.2425,-0.9701,0 F100", "L -0.2425,-5.9701,0 F100",
+               "L 0,-20,0 F100"}));
 }
 
 // nct.md §3.17.1: a block out of the plane between two plane elements keeps the corner; it runs
