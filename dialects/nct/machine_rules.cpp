@@ -1,5 +1,7 @@
 #include "dialects/nct/machine_rules.h"
 
+#include "dialect/profile.h"
+
 namespace gcx::nct {
 
 namespace {
@@ -35,6 +37,8 @@ std::vector<SettingSpec> settings() {
       {S::SpindleOrientable, "N0607.ORI", "N0607.1", 1, "N0607 ORI"}, // 000:10167
       {S::SpindleIndexable, "N0607.INX", "N0607.2", 1, "N0607 INX"},  // 000:4559
       {S::CloseLoopMCode, "N0823", nullptr, 24, "N0823"},             // 000:9993
+      {S::CompLookAhead, "N1404", nullptr, 0, "N1404 BK No. Interf"}, // 000:7593-7595
+      {S::CompInterference, "N1403.IEN", nullptr, 1, "N1403 IEN"},    // 000:8229
   };
 }
 
@@ -69,6 +73,17 @@ MachineRules machineRules() {
   r.setCoordinatesSIsSpindleLimit = true; // G92 S (nct.md §3.18)
   r.workOffsetNames = {"G54", "G55", "G56", "G57", "G58", "G59"};
   r.extendedWorkOffsetPrefix = "G54.1 P";
+  // look-ahead breakers of radius compensation (nct.md §3.17.7, 000:7745-7768)
+  using G = GAction;
+  r.compensation.breakers = {G::StrokeLimitOn,      G::StrokeLimitOff,   G::WorkOffset,
+                             G::ExtendedWorkOffset, G::LocalCoordinates, G::SetCoordinates,
+                             G::MachineCoordinates, G::ReferenceReturn,  G::OtherReferenceReturn,
+                             G::LengthPlus,         G::LengthMinus,      G::LengthCancel,
+                             G::TurningOffsets};
+  r.compensation.breakerMCodes = {MAction::Stop, MAction::OptionalStop, MAction::End,
+                                  MAction::EndRewind};
+  r.compensation.lengthWordBreaks = true;
+  r.contour = {",C", ",R", ",A"}; // chapter 17 (nct.md §4)
   return r;
 }
 

@@ -54,6 +54,20 @@ inline constexpr const char* LongBlock = "GCXW05"; // longer than the dialect's 
 inline constexpr const char* MirrorWithTransform = "2001";
 inline constexpr const char* ArcRadiusMismatch = "2012";
 inline constexpr const char* ArcDefinition = "2015";
+// --- machine: cutter radius compensation (nct.md §3.17, docs/compensation.md)
+inline constexpr const char* CompCancelInArc = "2043";      // G40 in a G2/G3 block
+inline constexpr const char* CompNoIntersection = "2047";   // inner corner, offsets do not meet
+inline constexpr const char* CompInterference = "2049";     // compensated move against the path
+inline constexpr const char* CompBufferFull = "2090";       // no plane motion within the look-ahead
+inline constexpr const char* CompRadiusTooLarge = "GCX070"; // tool radius >= an inner arc's
+inline constexpr const char* CompPlaneChange = "GCX071";    // G17/G18/G19 while compensating
+inline constexpr const char* CompStartInArc = "GCX072";     // G41/G42 start-up in G2/G3
+inline constexpr const char* CompNoRegister = "GCX073";     // D names no radius register
+// --- machine: automatic contour geometry (nct.md §4)
+inline constexpr const char* ChamferAndRounding = "2082"; // ,C and ,R in one block
+inline constexpr const char* IllegalChamfer = "2085";     // no plane element before or after
+inline constexpr const char* ChamferTooBig = "GCX074";    // does not fit on the elements
+inline constexpr const char* AngleLine = "GCX075";        // ,A outside a one-coordinate G0/G1
 // --- gcx: execution
 inline constexpr const char* NotImplemented = "GCX030";
 inline constexpr const char* UnknownGCodeAtRun = "GCX031";

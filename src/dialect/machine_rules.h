@@ -9,6 +9,8 @@
 
 namespace gcx {
 
+enum class GAction : unsigned char; // dialect/profile.h
+
 /// A machine setting the core reads, named by its meaning. The setup file holds it under the
 /// dialect's key (SettingSpec::key).
 enum class Setting : unsigned char {
@@ -39,6 +41,8 @@ enum class Setting : unsigned char {
   SpindleOrientable,    // 1: the spindle can be oriented
   SpindleIndexable,     // 1: the spindle has a position loop
   CloseLoopMCode,       // the M code that closes the spindle position loop
+  CompLookAhead,        // blocks radius compensation reads ahead beyond the 2 it always reads
+  CompInterference,     // 1: a compensated move against its programmed direction is an alarm
 };
 
 /// Where the setup holds a setting in this dialect.
@@ -107,6 +111,21 @@ enum class ArcLMeaning : unsigned char {
   None,  // not an arc word
 };
 
+/// Cutter radius compensation (docs/compensation.md): what interrupts its look-ahead. The
+/// vector is removed at the end of the block before, the block runs uncompensated, and the
+/// next plane motion rebuilds the vector.
+struct CompensationRules {
+  std::vector<GAction> breakers;      // G codes (by action) whose block breaks the look-ahead
+  std::vector<MAction> breakerMCodes; // M codes likewise
+  bool lengthWordBreaks = false;      // a tool length word (H) likewise
+};
+
+/// The words of the automatic contour geometry (nct.md §4): a chamfer or a rounding between a
+/// block and the next, and the direction angle of a line. Empty: the dialect has none.
+struct ContourWords {
+  std::string chamfer, rounding, angle;
+};
+
 /// What the machine model follows for a dialect, beside its code tables.
 struct MachineRules {
   std::vector<SettingSpec> settings;
@@ -131,6 +150,8 @@ struct MachineRules {
   /// the numbered extended ones (prefix + number).
   std::vector<std::string> workOffsetNames;
   std::string extendedWorkOffsetPrefix;
+  CompensationRules compensation;
+  ContourWords contour;
 
   const SettingSpec* setting(Setting s) const;
   const MCodeSpec* mcode(int code) const;

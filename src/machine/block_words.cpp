@@ -21,7 +21,15 @@ const ir::Word* sortWords(const ir::Block& b, const Profile& profile, BlockWords
   for (const ir::Word& w : b.words) {
     if (w.kind != ir::ValueKind::Number && w.kind != ir::ValueKind::Path) return &w;
     if (w.address.size() != 1) {
-      out.other.push_back(&w);
+      const ContourWords& contour = profile.machine.contour;
+      if (!contour.chamfer.empty() && w.address == contour.chamfer)
+        out.chamfer = &w;
+      else if (!contour.rounding.empty() && w.address == contour.rounding)
+        out.rounding = &w;
+      else if (!contour.angle.empty() && w.address == contour.angle)
+        out.angle = &w;
+      else
+        out.other.push_back(&w);
       continue;
     }
     const char letter = w.address[0];

@@ -19,7 +19,9 @@ struct BlockWords {
   const ir::Word *r = nullptr, *f = nullptr, *s = nullptr, *t = nullptr, *h = nullptr, *d = nullptr,
                  *p = nullptr, *q = nullptr, *l = nullptr, *e = nullptr;
   std::vector<const ir::Word*> m;
-  std::vector<const ir::Word*> other;        // rotary axes, ,C ,R ,A, AX, <file>, O, N words
+  /// The contour geometry words (MachineRules::contour): chamfer, rounding, direction angle.
+  const ir::Word *chamfer = nullptr, *rounding = nullptr, *angle = nullptr;
+  std::vector<const ir::Word*> other;        // multi-letter words (AX), <file>, O, N words
   std::array<const ir::Word*, 26> letters{}; // every single-letter word by its letter
 
   /// The word of a letter as written (null if none): for rules the profile gives by letter.

@@ -44,6 +44,7 @@ Interpreter::Interpreter(const Profile& profile, const Setup& setup, motion::Sin
   rollover_.amount = setting(profile_, setup_, Setting::RolloverAmount, 360);
   resetModal();
   reexpress();
+  comp_ = CompensationStage(compensationOptions());
 }
 
 bool Interpreter::fail(const char* code, const SourceRange& where, std::string message) {
@@ -170,7 +171,19 @@ void Interpreter::emit(motion::Event e) {
     stopped_ = true;
     return;
   }
-  sink_->event(e);
+  // chamfers and roundings, then radius compensation, then the sink
+  struct ToCompensation : motion::Sink {
+    CompensationStage& comp;
+    motion::Sink& out;
+    bool ok = true;
+    ToCompensation(CompensationStage& c, motion::Sink& o) : comp(c), out(o) {}
+    void event(const motion::Event& x) override { ok = comp.event(x, out) && ok; }
+  } toCompensation(comp_, *sink_);
+  if (!corners_.event(e, toCompensation) || !toCompensation.ok) {
+    compensationFailed(corners_.failure() ? *corners_.failure() : *comp_.failure());
+    stopped_ = true;
+    return;
+  }
   if (stopCheck_)
     if (auto why = stopCheck_()) {
       fail(diag::code::OutputTooLarge, blockRange_, std::move(*why));
@@ -278,6 +291,7 @@ bool Interpreter::executeBlock(const ir::Block& block) {
   const ModalState before = state_;
   pendingTurning_ = nullptr;
   if (!applyModal(w)) return false;
+  if (!radiusCompensation(w, before)) return false;
   if (w.hasAxisWord() && !w.has(GAction::DataInput)) {
     const std::string key = workOffsetKey(state_.workOffset);
     for (int plane = 1; plane <= 3; ++plane)
@@ -423,6 +437,10 @@ bool Interpreter::applyModal(const BlockWords& w) {
     case GAction::OtherReferenceReturn:
     case GAction::DiameterMode:
       break; // applyNonMotion
+    case GAction::RadiusCompLeft:
+    case GAction::RadiusCompRight:
+      state_.radiusComp = g->action; // radiusCompensation() starts the stage
+      break;
     case GAction::DrillCycle:
       state_.cycle = g->action; // drillBlock() stores the block's data and drills
       break;
@@ -863,7 +881,8 @@ bool Interpreter::move(const BlockWords& w) {
     program_[ax.second] = hole[ax.second];
     return true;
   }
-  const Vec3 to = target(w, true);
+  Vec3 to = target(w, true);
+  if (!contourGeometry(w, to)) return false;
   const motion::Extra extraTo = extraTarget(w);
   switch (state_.motion) {
   case GAction::Rapid:

@@ -17,6 +17,8 @@
 #include "dialect/profile.h"
 #include "ir/block.h"
 #include "machine/block_words.h"
+#include "machine/compensation.h"
+#include "machine/contour_corners.h"
 #include "machine/setup.h"
 #include "machine/transforms.h"
 #include "motion/event.h"
@@ -271,6 +273,15 @@ private:
   motion::Extra extraTarget(const BlockWords& w) const;
   double rotaryDelta(double current, double value) const;
   void selectPlaneAxes(const BlockWords& w);
+
+  // --- cutter radius compensation (radius_compensation.cpp, docs/compensation.md) ----------
+  CompensationStage::Options compensationOptions() const;
+  /// The block's G40/G41/G42, D, plane and look-ahead breakers, handed to the stage.
+  bool radiusCompensation(const BlockWords& w, const ModalState& before);
+  /// Reports a stage's failure as a located error; always false.
+  bool compensationFailed(const CompensationFailure& f);
+  /// ,A completes `to`; ,C and ,R are requested from the corner stage (contour_geometry.cpp).
+  bool contourGeometry(const BlockWords& w, Vec3& to);
   void emitModalChanges(const ModalState& before);
   void emit(motion::Event e);
 
@@ -293,7 +304,9 @@ private:
   std::map<std::string, std::array<double, 3>> rotations_; // basic rotations per work system
   std::map<int, double> wear_;                             // G10 L11 length wear per register
   std::map<int, double> radiusWear_;                       // #13000+n radius wear per register
-  CycleStateBox cycles_; // the cycles library's modal memory (cycle_state.h)
+  CycleStateBox cycles_;       // the cycles library's modal memory (cycle_state.h)
+  ContourCornerStage corners_; // chamfers and roundings, before compensation
+  CompensationStage comp_;     // between the programmed path and the sink
   ContourSource contours_;
   std::optional<std::int64_t> resumeAfter_;
   const GCodeSpec* pendingTurning_ = nullptr; // a one-shot turning cycle in the current block

@@ -96,6 +96,8 @@ bool Interpreter::traceContour(const std::vector<ContourBlock>& blocks,
   Capture capture;
   Interpreter probe(*this);
   probe.sink_ = &capture;
+  probe.comp_ = CompensationStage(compensationOptions()); // the contour's own path
+  probe.corners_ = ContourCornerStage();
   probe.contours_ = nullptr;
   auto isComp = [&](const GCodeSpec* g) {
     return g && (g->action == GAction::RadiusCompOff || g->action == GAction::RadiusCompLeft ||

@@ -183,13 +183,25 @@ TEST(CyclesSpec_8_TV25, G79FacingCycleRepeats) {
   EXPECT_EQ(h.out.at("N50"), "G0 X60 Z10");
 }
 
-// TV-26 (000:10464-10531), the manual's own example in G19: it parses (a); its first contour
-// rounds a corner with `,R5`, chapter-17 geometry gcx does not execute yet, so the run stops
-// there with a located error instead of cutting a contour without the rounding.
-TEST(CyclesSpec_8_TV26, ManualExampleParsesAndStopsAtTheCornerRounding) {
-  const std::string program =
-      readFile(sourceDir() / "tests/corpus/nct/spec/cycles-s8-tv26/O0001.nct");
-  EXPECT_EQ(failing(program), "N140 GCX030 14:10");
+// TV-26 (000:10464-10531), the manual's own example in G19, end to end: the finishing pass
+// G70.7 P110 Q170 runs N110-N170 under G41 with D2 = 0.4 (tool-centre path in the Y-Z plane,
+// Y a diameter) and rounds N140/N150 with ,R5, offset to 4.6 (docs/compensation.md).
+TEST(CyclesSpec_8_TV26, ManualExampleRunsWithCompensationAndRounding) {
+  CycleHarness h;
+  h.diameter = 2; // Y
+  h.setup.tools[1].radius = 0.8;
+  h.setup.tools[2].radius = 0.4;
+  ASSERT_TRUE(h.run(readFile(sourceDir() / "tests/corpus/nct/spec/cycles-s8-tv26/O0001.nct")))
+      << h.error();
+  // N110 start-up: perpendicular to N120; N120/N130 and N130/N140 inner corners; N140 ends
+  // where the rounding's centre (Y-25 Z34.641, radius 5 tangent to both) projects on it
+  EXPECT_EQ(h.out["N110"], "G0 Y-79.2");
+  EXPECT_EQ(h.out["N120"], "G1 Z50.1657 F1.5");
+  EXPECT_EQ(h.out["N130"], "G1 Y-59.2 Z40.1657 F1.5");
+  EXPECT_EQ(h.out["N140"], "G1 Z34.641 F1.5 | G3 Y-51.3143 Z30.0882 R4.6 F1.5");
+  EXPECT_EQ(h.out["N150"], "G2 Y0.8 Z0 R30.4 F1.5"); // cancel: ends on its perpendicular
+  EXPECT_EQ(h.out["N160"], "G1 Y0 Z-1 F1.5");
+  EXPECT_EQ(h.out["N170"], "G1 Y4 F1.5");
 }
 
 // §4.11 inside a subprogram: a contour block's motion names the G70.7 and the call, once each.

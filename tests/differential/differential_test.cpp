@@ -7,6 +7,7 @@
 
 #include <sstream>
 
+#include "differential/oracle_run.h"
 #include "emit/canonical.h"
 #include "machine/setup.h"
 #include "oracle/canon.h"
@@ -51,18 +52,6 @@ Ours runGcx(const std::string& name) {
   o.run = runNct(readFile(programs() / (name + ".nct")), setupOf(name), &emitter);
   o.canonical = text.str();
   return o;
-}
-
-std::vector<motion::Event> runOracle(const std::string& text, const oracle::Rs274Options& opt,
-                                     std::string& failure) {
-  const oracle::Rs274Result r = oracle::Rs274(opt).run(text);
-  if (!r.ok()) {
-    failure = r.summary();
-    return {};
-  }
-  oracle::CanonOptions copt;
-  copt.programText = text;
-  return oracle::parseCanon(r.canonLines, copt);
 }
 
 class Differential : public testing::TestWithParam<std::string> {};

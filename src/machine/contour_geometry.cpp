@@ -1,0 +1,70 @@
+// The interpreter's side of the automatic contour geometry (nct.md §4): the direction angle of
+// a line completes its end point in program coordinates; a chamfer or rounding is requested
+// from the stage that inserts it (contour_corners.h).
+#include <cmath>
+#include <fmt/format.h>
+
+#include "diag/codes.h"
+#include "emit/number.h"
+#include "machine/interpreter.h"
+#include "motion/geometry.h"
+
+namespace gcx::machine {
+
+bool Interpreter::contourGeometry(const BlockWords& w, Vec3& to) {
+  if (!w.angle && !w.chamfer && !w.rounding) return true;
+  const motion::PlaneAxes ax = motion::axesOf(state_.plane);
+  const bool first = axisGiven(w, ax.first), second = axisGiven(w, ax.second);
+  const bool line = state_.motion == GAction::Rapid || state_.motion == GAction::Linear;
+  if (w.angle) {
+    // ,A: exactly one plane coordinate; the other follows from the direction (nct.md §4.2)
+    if (!line)
+      return fail(
+          diag::code::AngleLine, w.angle->range,
+          fmt::format("{} gives the direction of a G0 or G1 line (nct.md §4.2)", w.angle->address));
+    if (first == second)
+      return fail(diag::code::NotImplemented, w.angle->range,
+                  fmt::format("{} with {} plane coordinates is an intersection calculation, which "
+                              "is not implemented yet (nct.md §4.3)",
+                              w.angle->address, first ? "both" : "no"));
+    const double a = w.angle->number * M_PI / 180.0;
+    const double c = std::cos(a), s = std::sin(a);
+    if (std::fabs(first ? c : s) < 1e-12)
+      return fail(diag::code::AngleLine, w.angle->range,
+                  fmt::format("a line of direction {} never reaches the given coordinate",
+                              emit::formatNumber(w.angle->number)));
+    if (first)
+      to[ax.second] = program_[ax.second] + (to[ax.first] - program_[ax.first]) * s / c;
+    else
+      to[ax.first] = program_[ax.first] + (to[ax.second] - program_[ax.second]) * c / s;
+  }
+  if (!w.chamfer && !w.rounding) return true;
+  if (w.chamfer && w.rounding)
+    return fail(diag::code::ChamferAndRounding, w.rounding->range,
+                "a chamfer and a rounding in one block (nct.md §4.1)");
+  const ir::Word* word = w.chamfer ? w.chamfer : w.rounding;
+  const bool arc = state_.motion == GAction::ArcCW || state_.motion == GAction::ArcCCW;
+  if ((!arc && to[ax.first] == program_[ax.first] && to[ax.second] == program_[ax.second]) ||
+      state_.motion == GAction::Rapid || (!line && !arc))
+    return fail(diag::code::IllegalChamfer, word->range,
+                "illegal chamfer or rounding: the block is no G1, G2 or G3 move in the selected "
+                "plane (nct.md §4.1)");
+  if (word->number <= 0)
+    return fail(diag::code::DataOutOfRange, word->range,
+                fmt::format("{} must be greater than 0", word->address));
+  // the size scales with the programmable transforms (uniform in the plane, nct.md §3.15)
+  const Eigen::Matrix3d m = transforms_.matrix().linear();
+  const double det = m(ax.first, ax.first) * m(ax.second, ax.second) -
+                     m(ax.first, ax.second) * m(ax.second, ax.first);
+  const double col1 = std::hypot(m(ax.first, ax.first), m(ax.second, ax.first));
+  const double col2 = std::hypot(m(ax.first, ax.second), m(ax.second, ax.second));
+  if (std::fabs(col1 - col2) > 1e-9 * col1)
+    return fail(diag::code::NotImplemented, word->range,
+                "a chamfer or rounding under scaling with unequal factors is not implemented yet");
+  corners_.request(w.chamfer ? ContourCornerStage::Kind::Chamfer
+                             : ContourCornerStage::Kind::Rounding,
+                   mm(word->number) * std::sqrt(std::fabs(det)), state_.plane);
+  return true;
+}
+
+} // namespace gcx::machine

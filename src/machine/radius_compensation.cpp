@@ -1,0 +1,105 @@
+// The interpreter's side of cutter radius compensation (docs/compensation.md): which side, which
+// radius, start-up and cancel checks, look-ahead breakers. The path itself is the stage's
+// (compensation.h).
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "diag/codes.h"
+#include "machine/interpreter.h"
+#include "machine/settings.h"
+#include "motion/geometry.h"
+
+namespace gcx::machine {
+
+CompensationStage::Options Interpreter::compensationOptions() const {
+  CompensationStage::Options o;
+  o.lookAheadBlocks = 2 + static_cast<int>(setting(profile_, setup_, Setting::CompLookAhead));
+  o.interferenceCheck = setting(profile_, setup_, Setting::CompInterference, 1) == 1;
+  return o;
+}
+
+bool Interpreter::compensationFailed(const CompensationFailure& f) {
+  diag::Diagnostic d{diag::Severity::Error, f.code, f.message, SourceRange{f.at.at, 1}, {}};
+  for (auto it = f.at.chain.rbegin(); it != f.at.chain.rend(); ++it)
+    d.notes.push_back({SourceRange{it->call, 1}, "in " + it->what});
+  diags_.report(std::move(d));
+  return false;
+}
+
+bool Interpreter::radiusCompensation(const BlockWords& w, const ModalState& before) {
+  const bool on = state_.radiusComp != GAction::RadiusCompOff;
+  if (!on && !comp_.engaged()) return true;
+  if (!comp_.beginBlock(*sink_)) return compensationFailed(*comp_.failure());
+  const motion::PlaneAxes ax = motion::axesOf(state_.plane);
+  const bool arcMode = state_.motion == GAction::ArcCW || state_.motion == GAction::ArcCCW;
+  const bool planeWords = axisGiven(w, ax.first) || axisGiven(w, ax.second);
+  const ir::Word* startWord = w.findAction(GAction::RadiusCompLeft);
+  if (!startWord) startWord = w.findAction(GAction::RadiusCompRight);
+  const ir::Word* cancelWord = w.findAction(GAction::RadiusCompOff);
+  if (before.radiusComp != GAction::RadiusCompOff &&
+      (state_.plane != before.plane || state_.planeAxes != before.planeAxes)) {
+    const ir::Word* g = w.findAction(GAction::PlaneXY);
+    if (!g) g = w.findAction(GAction::PlaneZX);
+    if (!g) g = w.findAction(GAction::PlaneYZ);
+    return fail(diag::code::CompPlaneChange, g ? g->range : blockRange_,
+                "the plane changes while radius compensation is on: cancel it (G40) first");
+  }
+  if (startWord && before.radiusComp == GAction::RadiusCompOff && arcMode && planeWords)
+    return fail(diag::code::CompStartInArc, startWord->range,
+                "radius compensation starts only in a G0 or G1 block, not in an arc "
+                "(nct.md §3.17.2)");
+  if (cancelWord && before.radiusComp != GAction::RadiusCompOff && arcMode && planeWords)
+    return fail(diag::code::CompCancelInArc, cancelWord->range,
+                "radius compensation is cancelled only in a G0 or G1 block, not in an arc "
+                "(nct.md §3.17.3)");
+  int side = 0;
+  double radius = 0;
+  if (on) {
+    side = state_.radiusComp == GAction::RadiusCompLeft ? 1 : -1;
+    if (state_.lastD != 0) {
+      const auto it = setup_.tools.find(state_.lastD);
+      if (it == setup_.tools.end())
+        return fail(diag::code::CompNoRegister, w.d ? w.d->range : blockRange_,
+                    fmt::format("D{}: the setup's tool table has no radius register {}",
+                                state_.lastD, state_.lastD));
+      radius = it->second.radius;
+    }
+    if (radius < 0) side = -side, radius = -radius; // a negative radius swaps the side
+    // an odd number of mirrored plane axes swaps G41 and G42 (nct.md §3.15)
+    const Eigen::Matrix3d m = transforms_.matrix().linear();
+    const double det = m(ax.first, ax.first) * m(ax.second, ax.second) -
+                       m(ax.first, ax.second) * m(ax.second, ax.first);
+    if (det < 0) side = -side;
+  }
+  // a start-up's or cancel's I J K: the direction of a virtual element (nct.md §3.17.2-3)
+  std::optional<comp::Vec2> direction;
+  if ((startWord || cancelWord) && !arcMode && (w.ijk[ax.first] || w.ijk[ax.second])) {
+    Vec3 v = Vec3::Zero();
+    for (int a : {ax.first, ax.second})
+      if (w.ijk[a]) v[a] = mm(w.ijk[a]->number);
+    v = transforms_.matrix().linear() * v;
+    direction = comp::Vec2(v[ax.first], v[ax.second]);
+  }
+  const CompensationRules& rules = profile_.machine.compensation;
+  bool breaks = w.h && rules.lengthWordBreaks;
+  for (const GCodeSpec* g : w.gCodes)
+    breaks = breaks || (g && std::ranges::find(rules.breakers, g->action) != rules.breakers.end());
+  for (const ir::Word* mw : w.m) {
+    const MCodeSpec* spec = profile_.machine.mcode(static_cast<int>(mw->number));
+    breaks = breaks || (spec && std::ranges::find(rules.breakerMCodes, spec->action) !=
+                                    rules.breakerMCodes.end());
+  }
+  if (breaks) comp_.breakLookAhead(*sink_);
+  if (comp_.failure()) return compensationFailed(*comp_.failure());
+  comp_.setMode(state_.plane, side, radius, direction);
+  // in-plane words without in-plane displacement (nct.md §3.17.1, 000:7625-7641)
+  if (on && planeWords && !arcMode && !startWord) {
+    const Vec3 to = target(w, true);
+    if (to[ax.first] == program_[ax.first] && to[ax.second] == program_[ax.second])
+      comp_.zeroPlaneMove();
+  }
+  return true;
+}
+
+} // namespace gcx::machine
