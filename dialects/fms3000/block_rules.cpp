@@ -1,5 +1,6 @@
 #include "dialects/fms3000/block_rules.h"
 
+#include <algorithm>
 #include <fmt/format.h>
 
 #include "diag/codes.h"
@@ -78,6 +79,45 @@ void warnFanucHabits(const ir::Block& b, diag::Engine& diags) {
   }
 }
 
+// At most one of the codes that set or move to points per block (001:3849-3870, [D] for the
+// pairs the manual does not list); cycles are forbidden under G20 (001:3912); G166/G167 take
+// exactly one of X and Z (001:3914).
+bool checkCodeCombinations(const ir::Block& b, diag::Engine& diags) {
+  static constexpr double exclusive[] = {20, 27, 28, 30, 31, 47, 48, 60, 67, 68, 69, 92};
+  const ir::Word* first = nullptr;
+  for (const ir::Word& w : b.words) {
+    if (!w.is('G')) continue;
+    const bool one =
+        std::find(std::begin(exclusive), std::end(exclusive), w.number) != std::end(exclusive);
+    if (one && first) {
+      diags.error(diag::code::ModalGroupConflict, w.range,
+                  fmt::format("G{} and G{} exclude each other in one block (001:3849-3870)",
+                              first->text, w.text));
+      return false;
+    }
+    if (one) first = &w;
+    if (isCycleCode(w.number) && hasG(b, 20) && w.number != 166 && w.number != 167) {
+      diags.error(diag::code::FmsCycleParameters, w.range,
+                  "cycles are forbidden in the arbitrary plane G20 (001:3912)");
+      return false;
+    }
+    if (w.number == 166 || w.number == 167) {
+      const bool x = b.find('X') != nullptr, z = b.find('Z') != nullptr;
+      if (x == z) {
+        diags.error(diag::code::FmsCycleParameters, w.range,
+                    fmt::format("G{} takes exactly one of X and Z (001:3914)", w.text));
+        return false;
+      }
+      if (!b.find('R')) {
+        diags.error(diag::code::FmsCycleParameters, w.range,
+                    fmt::format("G{} needs R, the chamfer or fillet size (001:3914)", w.text));
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 } // namespace
 
 bool isCycleCode(double g) {
@@ -86,6 +126,7 @@ bool isCycleCode(double g) {
 
 bool checkBlockRules(const ir::Block& b, diag::Engine& diags) {
   warnFanucHabits(b, diags);
+  if (!checkCodeCombinations(b, diags)) return false;
   bool ok = true;
   bool cycle = false; // a word after a cycle code is its parameter (§5.1, §6.3)
   bool dwell = false;

@@ -11,6 +11,10 @@ std::vector<SettingSpec> settings() {
   return {
       // N3020 is named with the "radii at start and end differ" alarm (001:3892-3893) [D]
       {S::ArcRadiusTolerance, "N3020", nullptr, 0.001, "N3020"},
+      // N3021: I/J/K incremental (0), absolute (1), or following G90/G91 (2) (001:1336-1400)
+      {S::ArcCentreAbsolute, "N3021", nullptr, 0, "N3021"},
+      // N3031: what G92's words mean (001:1789-1800); only 0 is executed yet
+      {S::SetCoordinatesMode, "N3031", nullptr, 0, "N3031"},
   };
 }
 
@@ -45,7 +49,13 @@ MachineRules machineRules() {
   // G37 X Y A: rotation by A degrees (§3.12); G69 X Y Z: per-axis factors (§3.13)
   r.transform = {'A', 0, "XYZ", "G37 without A (fms3000.md §3.12)",
                  "G69 without factors (fms3000.md §3.13)"};
-  r.arcL = ArcLMeaning::None; // L is only G25's repeat count (§6.2)
+  r.arcL = ArcLMeaning::None;     // L is only G25's repeat count (§6.2)
+  r.dwellAfterMotion = true;      // "after the motion and technological commands" (001:1623-1626)
+  r.strictArcRadius = true;       // R0, chord > 2R, full circle by R: errors (001:1407-1427)
+  r.centreWordsOnlyOnArcs = true; // I J K in a G0/G1 block: error (001:3793)
+  // G30/G31: fixed points 1 and 2 at N7001-N7401 / N7002-N7402, one parameter per axis
+  // (001:1573); G28: machine zero (001:1560-1568)
+  r.directReferencePointKey = "N7{0}0{1}";
   // G43/G44 act along axis 3, 2 or 1 under G17, G18, G19 (001:1889-1931)
   r.lengthAlongPlaneNormal = true;
   r.surfaceSpeedAxis = 0;                  // the N1030 axis: X (§3.15)
