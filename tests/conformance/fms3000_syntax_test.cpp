@@ -34,6 +34,8 @@ TEST(Fms3000Syntax_1_1, RemLineIsACommentToTheLineEnd) {
 TEST(Fms3000Syntax_1_1, RemKeepsCyrillicText) {
   const Parsed p = parseFms("rem \u0427\u0438\u0441\u0442\u043e\u0432\u043e\u0439\r\nM30\r\n");
   EXPECT_EQ(p.errors(), V{});
+  ASSERT_EQ(p.blocks.size(), 2u);
+  ASSERT_EQ(p.blocks[0].comments.size(), 1u);
   EXPECT_EQ(p.blocks[0].comments[0].text, "\u0427\u0438\u0441\u0442\u043e\u0432\u043e\u0439");
 }
 

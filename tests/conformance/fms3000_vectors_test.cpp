@@ -94,11 +94,41 @@ TEST(Fms3000Vectors_8, T16_G55G53ModalG54AndG92) {
       (V{"R 600,250,120", "R 0,0,120", "R 10,0,120", "R 50,50,120", "R 60,60,120"}));
 }
 
+TEST(Fms3000Vectors_8, T16_G53IsTheMachineSystemNotG54) {
+  machine::Setup s = s0();
+  s.workOffsets["G54"] = {1, 2, 3};
+  EXPECT_EQ(run("G0X5Y5Z5 · G53G0X0Y0Z0 · X10 · G54G0X0 · M30", s),
+            (V{"R 6,7,8", "R 0,0,0", "R 10,0,0", "R 1,0,0"}));
+}
+
 TEST(Fms3000Vectors_8, T17_LengthCompensationAndFixedPoints) {
   machine::Setup s = s0();
   s.tools[1].length = 50;
   EXPECT_EQ(run("G0X30Y40Z100 · G43H1 · G0Z10 · G44H1Z10 · G49Z10 · G28X5Y5 · G30Z0 · M30", s),
             (V{"R 30,40,100", "R 30,40,60", "R 30,40,-40", "R 30,40,10", "R 0,0,10", "R 0,0,300"}));
+}
+
+TEST(Fms3000Vectors_8, T19_MirrorAboutAPointSwapsTheArcDirection) {
+  EXPECT_EQ(run("G0X100Y0 · G67X100 · G90G1F100X110 · X140Y15 · G2X180I20J0 · G68X0 · G0X0Y0 · "
+                "M30"),
+            (V{"R 100,0,0", "L 90,0,0 F100", "L 60,15,0 F100", "CCW 20,15,0 C40,15 r20 θ180",
+               "R 0,0,0"}));
+}
+
+TEST(Fms3000Vectors_8, T20_RotationByG37AndItsCancelByA0) {
+  EXPECT_EQ(run("G37X0Y0A90 · G1X10Y0F100 · X10Y10 · G37A0 · G0X0Y0 · M30"),
+            (V{"L 0,10,0 F100", "L -10,10,0 F100", "R 0,0,0"}));
+}
+
+TEST(Fms3000Vectors_8, T20_G35EndsTheRotation) {
+  // G35 and G37 share group 06 (§10 Q19)
+  EXPECT_EQ(run("G37X0Y0A90 · G1X10Y0F100 · G35 · X10Y10 · M30"),
+            (V{"L 0,10,0 F100", "L 10,10,0 F100"}));
+}
+
+TEST(Fms3000Vectors_8, T21_ScaleFactorsPerAxisAboutTheWorkOrigin) {
+  EXPECT_EQ(run("G69X2Y2 · G1X10Y5F100 · G69X1Y1 · G1X10Y5 · M30"),
+            (V{"L 20,10,0 F100", "L 10,5,0 F100"}));
 }
 
 TEST(Fms3000Vectors_8, T24_P19AndP019AreDifferentPrograms) {
