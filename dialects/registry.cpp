@@ -4,6 +4,10 @@
 #include <filesystem>
 
 #include "dialect/dialect.h"
+#include "dialects/fms3000/emitter.h"
+#include "dialects/fms3000/lexical_rules.h"
+#include "dialects/fms3000/profile.h"
+#include "dialects/fms3000/reader.h"
 #include "dialects/nct/emitter.h"
 #include "dialects/nct/lexical_rules.h"
 #include "dialects/nct/profile.h"
@@ -25,6 +29,18 @@ private:
   nct::Reader reader_;
 };
 
+class Fms3000Source : public BlockSource {
+public:
+  Fms3000Source(std::istream& in, FileId file, diag::Engine& diags, front::Encoding encoding)
+      : reader_(in, file, diags, {}, encoding) {}
+  bool next(ir::Block& out) override { return reader_.next(out); }
+  bool sawInput() const override { return reader_.sawInput(); }
+  std::size_t failedBlocks() const override { return reader_.failedBlocks(); }
+
+private:
+  fms3000::Reader reader_;
+};
+
 } // namespace
 
 const std::vector<Dialect>& dialects() {
@@ -39,6 +55,17 @@ const std::vector<Dialect>& dialects() {
               },
               &nct::makeEmitter,
               &nct::emitterCapabilities,
+              {}},
+      Dialect{"fms3000",
+              {".fms"},
+              &fms3000::profile,
+              &fms3000::lexicalRules,
+              [](std::istream& in, FileId f, diag::Engine& d,
+                 front::Encoding e) -> std::unique_ptr<BlockSource> {
+                return std::make_unique<Fms3000Source>(in, f, d, e);
+              },
+              &fms3000::makeEmitter,
+              &fms3000::emitterCapabilities,
               {}},
   };
   return all;

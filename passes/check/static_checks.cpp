@@ -33,9 +33,10 @@ void StaticChecker::block(const ir::Block& b) {
   }
   if (!b.empty()) ++blocks_;
   if (b.sequence) {
-    if (*b.sequence < 1 || *b.sequence > 99999999)
+    if (*b.sequence < profile_.minSequenceNumber || *b.sequence > profile_.maxSequenceNumber)
       diags_.error(diag::code::DataOutOfRange, b.sequenceRange,
-                   fmt::format("block number N{} is out of range 1-99999999", *b.sequence));
+                   fmt::format("block number N{} is out of range {}-{}", *b.sequence,
+                               profile_.minSequenceNumber, profile_.maxSequenceNumber));
     labels_.insert(*b.sequence);
   }
   for (const ir::Stmt& s : b.stmts)
@@ -112,7 +113,8 @@ void StaticChecker::words(const ir::Block& b) {
                                    formatNumber(w.number)));
         continue;
       }
-      if (g->group != 0 && g->group < static_cast<int>(groupSeen.size())) {
+      if (g->group != 0 && g->group < static_cast<int>(groupSeen.size()) &&
+          !profile_.lastOfModalGroupWins) {
         if (groupSeen[g->group]++)
           diags_.error(diag::code::ModalGroupConflict, w.range,
                        fmt::format("G{} is the second code of modal group {} in this block",

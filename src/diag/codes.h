@@ -143,4 +143,10 @@ inline constexpr const char* KeptContourLost = "GCX042"; // --keep cycles: a con
 inline constexpr const char* NeedsRs274 = "GCX050";  // full LinuxCNC without rs274 installed
 inline constexpr const char* Rs274Failed = "GCX051"; // rs274 rejected the program or its output
 
+// --- FMS-3000 (fms3000.md)
+inline constexpr const char* FmsMacroUnsupported = "FMSX01"; // СПЦП statement (§6.4, §10 Q1)
+inline constexpr const char* FmsUnusedE = "GCXW10";          // E without G04 or a cycle (§1.2)
+inline constexpr const char* FmsFanucHabit = "GCXW11"; // a Fanuc spelling with another meaning (§9)
+inline constexpr const char* FmsCycleParameters = "FMSX02"; // cycle words wrong (§5, 001:3912-3975)
+
 } // namespace gcx::diag::code

@@ -26,7 +26,8 @@ enum class Setting : unsigned char {
   RolloverShortest,     // 1: an absolute rotary move takes the shortest way
   RolloverAmount,       // degrees of one rollover
   DwellSecondsAlways,   // 1: a dwell is in seconds under feed per revolution too
-  ArcCentreAbsolute,    // 1: arc centre words are absolute in the work system, not incremental
+  ArcCentreAbsolute,    // 1: arc centre words are absolute in the work system, not incremental;
+                        // 2: absolute under G90, incremental under G91
   PeckReturn,           // mm: high-speed peck retract
   PeckClearance,        // mm: peck drilling clearance
   BoreExtractionPct,    // %: retract override of the feed-out boring cycles
@@ -43,6 +44,7 @@ enum class Setting : unsigned char {
   CloseLoopMCode,       // the M code that closes the spindle position loop
   CompLookAhead,        // blocks radius compensation reads ahead beyond the 2 it always reads
   CompInterference,     // 1: a compensated move against its programmed direction is an alarm
+  SetCoordinatesMode,   // 0: set-coordinates words are the tool's position in the new system
 };
 
 /// Where the setup holds a setting in this dialect.
@@ -140,6 +142,18 @@ struct MachineRules {
   DwellRule dwell;
   TransformWords transform;
   ArcLMeaning arcL = ArcLMeaning::Turns;
+  /// A dwell written with a motion runs after the motion of its block (FMS-3000 §3.9), instead
+  /// of the block being a dwell only.
+  bool dwellAfterMotion = false;
+  /// An arc by R is an error when R is 0, R is shorter than half the chord or the in-plane end
+  /// point is missing (FMS-3000 §3.5), instead of NCT's tolerant readings.
+  bool strictArcRadius = false;
+  /// I J K only on arcs: in a G0/G1 block they are an error (FMS-3000 §3.4).
+  bool centreWordsOnlyOnArcs = false;
+  /// Reference returns go straight to their point, the axis values only naming the axes
+  /// (FMS-3000 G28/G30/G31, §3.8). The point of G-code arg n > 0 is read from the setup
+  /// parameters under this fmt pattern ({0}: axis 0-2, {1}: n); arg 0 is machine zero.
+  const char* directReferencePointKey = nullptr;
   /// The tool length offset acts along the normal of the selected plane (else along Z).
   bool lengthAlongPlaneNormal = false;
   /// Constant surface speed: the axis whose distance from zero is the radius (0 X, 1 Y, 2 Z).

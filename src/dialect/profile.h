@@ -147,6 +147,10 @@ struct Profile {
   int maxMCodesPerBlock = 8;
   std::vector<int> exclusiveMCodes; // at most one of these per block (spindle M3 M4 M5 M19)
   int maxSignificantDigits = 15;
+  std::int64_t minSequenceNumber = 1; // the range of N
+  std::int64_t maxSequenceNumber = 99999999;
+  /// Several G codes of one modal group in a block: the last one wins (FMS-3000), not an error.
+  bool lastOfModalGroupWins = false;
   int maxSkipLevel = 9;
   int documentedSkipLevel = 8;        // levels above it are accepted with a warning
   std::vector<int> dataModeLCodes;    // G10 L<n> starts a data-entry section ended by G11

@@ -310,9 +310,13 @@ bool Interpreter::executeBlock(const ir::Block& block) {
   if (pendingTurning_) return turningBlock(w);
   const bool arcWithCentreOnly =
       (state_.motion == GAction::ArcCW || state_.motion == GAction::ArcCCW) &&
-      (w.ijk[0] || w.ijk[1] || w.ijk[2]);
+      (w.ijk[0] || w.ijk[1] || w.ijk[2] || (w.r && profile_.machine.strictArcRadius));
   if (!consumed && (w.hasAxisWord() || arcWithCentreOnly))
     if (!move(w)) return false;
+  if (pendingDwell_) {
+    emitDwell(*pendingDwell_);
+    pendingDwell_.reset();
+  }
   return afterMotion(w);
 }
 
@@ -566,13 +570,17 @@ bool Interpreter::applyNonMotion(const BlockWords& w, bool& consumed) {
   consumed = w.has(GAction::RotateOn) || w.has(GAction::ScaleOn) || w.has(GAction::MirrorOn) ||
              w.has(GAction::MirrorOff);
   if (const ir::Word* g = w.findAction(GAction::Dwell)) {
-    consumed = true;
     const DwellRule& dwell = profile_.machine.dwell;
     if (const ir::Word* x = dwell.rejectedWord ? w.letter(dwell.rejectedWord) : nullptr)
       return fail(diag::code::DwellWithoutP, x->range, dwell.rejectedMessage);
     const ir::Word* time = w.letter(dwell.word);
     if (!time) return fail(diag::code::MissingData, g->range, dwell.missingMessage);
-    emitDwell(time->number * dwell.secondsPerUnit);
+    if (profile_.machine.dwellAfterMotion) {
+      pendingDwell_ = time->number * dwell.secondsPerUnit; // executeBlock, after the motion
+    } else {
+      consumed = true;
+      emitDwell(time->number * dwell.secondsPerUnit);
+    }
   }
   if (w.has(GAction::DataInput)) {
     consumed = true;
@@ -593,8 +601,13 @@ bool Interpreter::applyNonMotion(const BlockWords& w, bool& consumed) {
       }
     return true;
   }
-  if (w.has(GAction::SetCoordinates)) {
+  if (const ir::Word* g = w.findAction(GAction::SetCoordinates)) {
     consumed = true;
+    if (const double mode = setting(profile_, setup_, Setting::SetCoordinatesMode); mode != 0)
+      return fail(diag::code::NotImplemented, g->range,
+                  fmt::format("{} with {} = {} is not implemented yet", gName(*g),
+                              settingLabel(profile_, Setting::SetCoordinatesMode),
+                              emit::formatNumber(mode)));
     if (w.s && profile_.machine.setCoordinatesSIsSpindleLimit) { // nct.md §3.18
       if (w.hasAxisWord())
         return fail(diag::code::ForbiddenAddress, w.s->range,
@@ -612,8 +625,10 @@ bool Interpreter::applyNonMotion(const BlockWords& w, bool& consumed) {
     consumed = true;
     return machineMove(w);
   }
-  if (w.has(GAction::ReferenceReturn)) {
+  if (const ir::Word* g = w.findAction(GAction::ReferenceReturn)) {
     consumed = true;
+    if (profile_.machine.directReferencePointKey)
+      return directReferenceReturn(w, profile_.gcode(g->number)->arg);
     return referenceReturn(w, 1);
   }
   if (const ir::Word* g = w.findAction(GAction::OtherReferenceReturn)) {
@@ -680,6 +695,23 @@ bool Interpreter::referenceReturn(const BlockWords& w, int point) {
   Vec3 to = machine_;
   for (int a = 0; a < 3; ++a)
     if (axisGiven(w, a)) to[a] = ref[a];
+  if (to != machine_) emitLine(Kind::Rapid, to);
+  reexpress();
+  return true;
+}
+
+// Straight to the point on the named axes, whatever their values, offsets and compensation
+// (FMS-3000 G28/G30/G31, fms3000.md §3.8); then the program position follows the offsets.
+bool Interpreter::directReferenceReturn(const BlockWords& w, int point) {
+  Vec3 to = machine_;
+  for (int a = 0; a < 3; ++a)
+    if (axisGiven(w, a))
+      to[a] =
+          point == 0
+              ? 0.0
+              : setup_.parameter(
+                    fmt::format(fmt::runtime(profile_.machine.directReferencePointKey), a, point),
+                    0.0);
   if (to != machine_) emitLine(Kind::Rapid, to);
   reexpress();
   return true;
@@ -881,6 +913,13 @@ bool Interpreter::move(const BlockWords& w) {
     program_[ax.second] = hole[ax.second];
     return true;
   }
+  if (profile_.machine.centreWordsOnlyOnArcs &&
+      (state_.motion == GAction::Rapid || state_.motion == GAction::Linear))
+    for (const ir::Word* c : w.ijk)
+      if (c)
+        return fail(
+            diag::code::ArcDefinition, c->range,
+            fmt::format("{} belongs to an arc: it is an error in a G00/G01 block", c->address));
   Vec3 to = target(w, true);
   if (!contourGeometry(w, to)) return false;
   const motion::Extra extraTo = extraTarget(w);
@@ -939,9 +978,18 @@ bool Interpreter::arc(const BlockWords& w, const Vec3& end, const motion::Extra&
   const double e1 = end[ax.first], e2 = end[ax.second];
   double c1, c2;
   if (w.r) {
-    if (!haveInPlaneEnd) return true; // no motion, no alarm (000:1314-1318)
     const double r = mm(w.r->number);
     const double d1 = e1 - s1, d2 = e2 - s2, chord = std::hypot(d1, d2);
+    if (profile_.machine.strictArcRadius) {
+      if (r == 0) return fail(diag::code::ArcZeroRadius, w.r->range, "arc of radius R0");
+      if (!haveInPlaneEnd || chord == 0)
+        return fail(diag::code::ArcDefinition, w.r->range,
+                    "a full circle cannot be programmed by R; write I/J/K");
+      if (std::fabs(r) < chord / 2 - 1e-9)
+        return fail(diag::code::ArcDefinition, w.r->range,
+                    fmt::format("the chord {} is longer than 2R", emit::formatNumber(chord)));
+    }
+    if (!haveInPlaneEnd) return true; // no motion, no alarm (000:1314-1318)
     if (chord == 0) return true;
     if (std::fabs(r) < chord / 2) {
       // R below half the chord: R is the start radius, centre on the chord (000:1343-1365)
@@ -956,7 +1004,8 @@ bool Interpreter::arc(const BlockWords& w, const Vec3& end, const motion::Extra&
     }
   } else {
     // from the start point, unless the dialect's setting makes the centre absolute
-    if (setting(profile_, setup_, Setting::ArcCentreAbsolute) == 1) {
+    const double centreMode = setting(profile_, setup_, Setting::ArcCentreAbsolute);
+    if (centreMode == 1 || (centreMode == 2 && !state_.incremental)) {
       c1 = w.ijk[ax.first] ? mm(w.ijk[ax.first]->number) : s1;
       c2 = w.ijk[ax.second] ? mm(w.ijk[ax.second]->number) : s2;
     } else {
@@ -967,13 +1016,15 @@ bool Interpreter::arc(const BlockWords& w, const Vec3& end, const motion::Extra&
   const double r0 = std::hypot(s1 - c1, s2 - c2), r1 = std::hypot(e1 - c1, e2 - c2);
   if (r0 < 1e-9) return fail(diag::code::ArcZeroRadius, at, "arc of radius 0");
   if (!turnsWord && std::fabs(r1 - r0) > radiusTolerance_)
-    return fail(diag::code::ArcRadiusMismatch, at,
-                fmt::format("end point radius {} differs from start radius {} by more than "
-                            "{} ({}); program L for a spiral",
-                            emit::formatNumber(std::round(r1 * 1e4) / 1e4),
-                            emit::formatNumber(std::round(r0 * 1e4) / 1e4),
-                            emit::formatNumber(radiusTolerance_),
-                            settingLabel(profile_, Setting::ArcRadiusTolerance)));
+    return fail(
+        diag::code::ArcRadiusMismatch, at,
+        fmt::format("end point radius {} differs from start radius {} by more than "
+                    "{} ({}){}",
+                    emit::formatNumber(std::round(r1 * 1e4) / 1e4),
+                    emit::formatNumber(std::round(r0 * 1e4) / 1e4),
+                    emit::formatNumber(radiusTolerance_),
+                    settingLabel(profile_, Setting::ArcRadiusTolerance),
+                    profile_.machine.arcL == ArcLMeaning::Turns ? "; program L for a spiral" : ""));
   if (state_.feed <= 0) return fail(diag::code::MissingData, at, "arc without a feed rate F");
   Vec3 centre = start;
   centre[ax.first] = c1;

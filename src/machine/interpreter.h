@@ -226,6 +226,7 @@ private:
   bool setCoordinates(const BlockWords& w);
   bool localCoordinates(const BlockWords& w);
   bool dataInput(const BlockWords& w, const ir::Block& b);
+  bool directReferenceReturn(const BlockWords& w, int point);
   bool referenceReturn(const BlockWords& w, int point);
   bool machineMove(const BlockWords& w);
   bool transforms(const BlockWords& w);
@@ -310,10 +311,11 @@ private:
   ContourSource contours_;
   std::optional<std::int64_t> resumeAfter_;
   const GCodeSpec* pendingTurning_ = nullptr; // a one-shot turning cycle in the current block
-  const GCodeSpec* turningMode_ = nullptr;    // the modal G77.7-G79.7 while group 1 holds it
-  std::optional<Vec3> turningEnd_;            // its last end point: omitted X/Z repeat it (§4.1)
-  std::optional<double> turningTaper_;        // and its R
-  int lockedFrom_ = 0;                        // the group-15 code a tapping cycle's G63 replaced
+  std::optional<double> pendingDwell_; // seconds, run after the block's motion (dwellAfterMotion)
+  const GCodeSpec* turningMode_ = nullptr; // the modal G77.7-G79.7 while group 1 holds it
+  std::optional<Vec3> turningEnd_;         // its last end point: omitted X/Z repeat it (§4.1)
+  std::optional<double> turningTaper_;     // and its R
+  int lockedFrom_ = 0;                     // the group-15 code a tapping cycle's G63 replaced
   bool deferCycles_ = false;
   bool ended_ = false;
   bool speedProgrammed_ = false; // an S word was given (before it, the speed is unknown)

@@ -53,7 +53,7 @@ TEST(NctEmitter, WritesEachBlockAsTheNctPrinterDoesAndNothingElse) {
 }
 
 TEST(Registry, FindsDialectsByNameAndExtension) {
-  EXPECT_EQ(dialectNames(), std::vector<std::string>{"nct"});
+  EXPECT_EQ(dialectNames(), (std::vector<std::string>{"nct", "fms3000"}));
   ASSERT_NE(findDialect("nct"), nullptr);
   EXPECT_EQ(findDialect("nct")->name, "nct");
   EXPECT_EQ(findDialect("NCT"), nullptr);
@@ -62,6 +62,8 @@ TEST(Registry, FindsDialectsByNameAndExtension) {
   EXPECT_EQ(dialectForPath("O0001.NCT"), findDialect("nct"));
   EXPECT_EQ(dialectForPath("O0001.ngc"), nullptr);
   EXPECT_EQ(dialectForPath("nct"), nullptr);
+  EXPECT_EQ(dialectForPath("progs/019.fms"), findDialect("fms3000"));
+  EXPECT_EQ(dialectForPath("0019.FMS"), findDialect("fms3000"));
 }
 
 TEST(Registry, EveryDialectIsComplete) {

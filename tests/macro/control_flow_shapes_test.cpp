@@ -1,12 +1,12 @@
 // The control-flow engine under remap tables of other dialects' shapes (docs/control-flow.md):
-// NCT's own table, and small hand-made tables for the FMS-3000 calls (fms3000.md §6.1) and the
-// WL4 calls and user canned cycles (wl4.md §5.1, §6.7). Their front ends do not exist yet, so
-// the programs are written in NCT syntax and run through a dialect that is NCT with the
-// hand-made ControlFlow.
+// NCT's own table, FMS-3000's table of calls (fms3000.md §6.1) and a small hand-made table for
+// the WL4 calls and user canned cycles (wl4.md §5.1, §6.7). The programs are written in NCT
+// syntax and run through a dialect that is NCT with the other ControlFlow.
 #include <gtest/gtest.h>
 
 #include "dialect/control_flow.h"
 #include "dialect/dialect.h"
+#include "dialects/fms3000/control_flow.h"
 #include "dialects/nct/profile.h"
 #include "ir/block.h"
 #include "support/run_support.h"
@@ -57,26 +57,11 @@ ControlFlow wl4Shape() {
   return f;
 }
 
-// FMS-3000: `P<digits>` calls the program named by the digits as written, after the block;
-// G<n> calls the user program G<n> when it exists, GG<n> is the built-in G<n>; M98 ends the
-// program (§6.1).
+// FMS-3000's own table (dialects/fms3000/control_flow): `P<digits>` calls the program named by
+// the digits as written, after the block; G<n> calls the user program G<n> when it exists,
+// GG<n> is the built-in G<n>; M98 ends the program (§6.1).
 ControlFlow fmsShape() {
-  RemapTable t;
-  Remap p = row("P", std::nullopt, FlowAction::CallSubprogram);
-  p.program = ProgramSource::CodeDigits;
-  t.rows.push_back(p);
-  t.rows.push_back(row("M", 99, FlowAction::Return));
-  t.rows.push_back(row("M", 98, FlowAction::EndProgram));
-  Remap g = row("G", std::nullopt, FlowAction::CallMacro);
-  g.program = ProgramSource::CodeDigits;
-  g.namePrefix = "G";
-  g.frame = LocalFrame::Arguments;
-  g.onlyIfProgramExists = true;
-  t.rows.push_back(g);
-  Remap gg = row("GG", std::nullopt, FlowAction::Builtin);
-  gg.builtin = "G";
-  t.rows.push_back(gg);
-  return namedByFile(std::move(t));
+  return namedByFile(fms3000::remapTable());
 }
 
 // NCT syntax with a hand-made control flow: the profile and dialect live as long as the test.

@@ -186,10 +186,11 @@ MacroRun runMacroUnder(const Dialect& dialect, const std::map<std::string, std::
   }
   run.printed = printed.str();
   for (const diag::Diagnostic& d : diags.all()) {
-    if (d.severity == diag::Severity::Error)
-      run.errors.push_back(fmt::format("{}:{}:{} {}",
-                                       fs::path(sm.name(d.range.begin.file)).filename().string(),
-                                       d.range.begin.line, d.range.begin.col, d.code));
+    if (d.severity == diag::Severity::Error || d.severity == diag::Severity::Warning)
+      (d.severity == diag::Severity::Error ? run.errors : run.warnings)
+          .push_back(fmt::format("{}:{}:{} {}",
+                                 fs::path(sm.name(d.range.begin.file)).filename().string(),
+                                 d.range.begin.line, d.range.begin.col, d.code));
     run.rendered += diag::renderText(d, sm);
   }
   fs::remove_all(dir);
@@ -213,6 +214,11 @@ MacroRun runMacroLimited(const std::map<std::string, std::string>& files, const 
 MacroRun runMacroAs(const Dialect& dialect, const std::map<std::string, std::string>& files,
                     const std::string& main, const std::vector<int>& watch) {
   return runMacroUnder(dialect, files, main, watch, {}, macro::Limits{}, {});
+}
+
+MacroRun runMacroWith(const Dialect& dialect, const std::map<std::string, std::string>& files,
+                      const std::string& main, const machine::Setup& setup) {
+  return runMacroUnder(dialect, files, main, {}, setup, macro::Limits{}, {});
 }
 
 } // namespace gcx::test

@@ -16,6 +16,7 @@ struct ProgramRun {
   std::vector<motion::Event> events;
   motion::Vec3 program = motion::Vec3::Zero(); // programmed position at the end (work frame)
   std::vector<std::string> errors;             // "line:col CODE"
+  std::vector<std::string> warnings;           // runMacro*: "file:line:col CODE"
   std::string rendered;
   std::vector<std::string> motion() const; // descriptions of the events, modal changes left out
   std::vector<std::string> all() const;    // every event, modal changes included
@@ -62,5 +63,8 @@ MacroRun runMacroLimited(const std::map<std::string, std::string>& files, const 
 /// ControlFlow): the control-flow engine under hand-made remap tables.
 MacroRun runMacroAs(const Dialect& dialect, const std::map<std::string, std::string>& files,
                     const std::string& main, const std::vector<int>& watch = {});
+/// The same with a machine setup (another dialect's own programs and parameters).
+MacroRun runMacroWith(const Dialect& dialect, const std::map<std::string, std::string>& files,
+                      const std::string& main, const machine::Setup& setup);
 
 } // namespace gcx::test

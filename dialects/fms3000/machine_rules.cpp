@@ -1,0 +1,67 @@
+#include "dialects/fms3000/machine_rules.h"
+
+namespace gcx::fms3000 {
+
+namespace {
+
+std::vector<SettingSpec> settings() {
+  using S = Setting;
+  // The machine parameters of fms3000.md §0, under the manual's own names; the fallbacks are
+  // the test state S0 of §8.
+  return {
+      // N3020 is named with the "radii at start and end differ" alarm (001:3892-3893) [D]
+      {S::ArcRadiusTolerance, "N3020", nullptr, 0.001, "N3020"},
+      // N3021: I/J/K incremental (0), absolute (1), or following G90/G91 (2) (001:1336-1400)
+      {S::ArcCentreAbsolute, "N3021", nullptr, 0, "N3021"},
+      // N3031: what G92's words mean (001:1789-1800); only 0 is executed yet
+      {S::SetCoordinatesMode, "N3031", nullptr, 0, "N3031"},
+  };
+}
+
+std::vector<MCodeSpec> mcodes() {
+  using A = MAction;
+  using T = MTiming;
+  // fms3000.md §2.2; timing per §1.4: M03/M04 before the motion, M05 and the stops after it
+  return {
+      {0, A::Stop, T::AfterMotion},        {1, A::OptionalStop, T::AfterMotion},
+      {2, A::End, T::AfterMotion},         {30, A::EndRewind, T::AfterMotion},
+      {3, A::SpindleCW, T::BeforeMotion},  {4, A::SpindleCCW, T::BeforeMotion},
+      {5, A::SpindleStop, T::AfterMotion}, {25, A::Subprogram, T::AfterMotion},
+      {98, A::Subprogram, T::AfterMotion}, {99, A::Subprogram, T::AfterMotion},
+  };
+}
+
+} // namespace
+
+MachineRules machineRules() {
+  MachineRules r;
+  r.settings = settings();
+  r.parameterKeyPrefix = "N";
+  r.parameterKeyDigits = 4;
+  r.mcodes = mcodes();
+  // S and T before the motion (§1.4 step 1, §10 Q16)
+  r.speedTiming = r.toolTiming = MTiming::BeforeMotion;
+  r.skipSense = SkipSense::SkipWhenOn; // no block skip in FMS-3000; the reader rejects `/`
+  // `G04 E<n>`: n tenths of a second (001:1616-1620); `G04 P500` is the Fanuc habit (§9)
+  r.dwell = {'E', 0.1, "G04 without E (the dwell in tenths of a second, fms3000.md §3.9)", 'P',
+             "G04 takes E in tenths of a second; P is the Fanuc dwell word and in FMS-3000 a "
+             "subprogram call (fms3000.md §9)"};
+  // G37 X Y A: rotation by A degrees (§3.12); G69 X Y Z: per-axis factors (§3.13)
+  r.transform = {'A', 0, "XYZ", "G37 without A (fms3000.md §3.12)",
+                 "G69 without factors (fms3000.md §3.13)"};
+  r.arcL = ArcLMeaning::None;     // L is only G25's repeat count (§6.2)
+  r.dwellAfterMotion = true;      // "after the motion and technological commands" (001:1623-1626)
+  r.strictArcRadius = true;       // R0, chord > 2R, full circle by R: errors (001:1407-1427)
+  r.centreWordsOnlyOnArcs = true; // I J K in a G0/G1 block: error (001:3793)
+  // G30/G31: fixed points 1 and 2 at N7001-N7401 / N7002-N7402, one parameter per axis
+  // (001:1573); G28: machine zero (001:1560-1568)
+  r.directReferencePointKey = "N7{0}0{1}";
+  // G43/G44 act along axis 3, 2 or 1 under G17, G18, G19 (001:1889-1931)
+  r.lengthAlongPlaneNormal = true;
+  r.surfaceSpeedAxis = 0;                  // the N1030 axis: X (§3.15)
+  r.setCoordinatesSIsSpindleLimit = false; // the ceiling is LIMS
+  r.workOffsetNames = {"G54", "G55", "G56", "G57", "G58", "G59"};
+  return r;
+}
+
+} // namespace gcx::fms3000

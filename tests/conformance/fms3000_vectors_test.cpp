@@ -1,0 +1,201 @@
+// The test vectors of fms3000.md §8 that gcx executes today, one test each, asserting the exact
+// motion (machine coordinates, 4 decimals) or the located error. Harness state S0: machine =
+// work = (0,0,0), N3021=0, N3031=0, fixed point 1 at X10 Y20 Z300. Programs run as `gcx run`
+// runs them: the control-flow engine, then the machine.
+#include <gtest/gtest.h>
+
+#include "support/fms3000_support.h"
+
+namespace gcx::test {
+namespace {
+
+using V = std::vector<std::string>;
+
+// " · " separates blocks in the spec; each becomes a CR LF line
+std::string blocks(const std::string& spec) {
+  std::string out, rest = spec;
+  const std::string dot = " \u00b7 ";
+  for (std::size_t at; (at = rest.find(dot)) != std::string::npos;) {
+    out += rest.substr(0, at) + "\r\n";
+    rest = rest.substr(at + dot.size());
+  }
+  return out + rest + "\r\n";
+}
+
+machine::Setup s0() {
+  machine::Setup s;
+  s.parameters = {{"N7001", 10}, {"N7101", 20}, {"N7201", 300}};
+  return s;
+}
+
+machine::Setup withParameter(const char* key, double value) {
+  machine::Setup s = s0();
+  s.parameters[key] = value;
+  return s;
+}
+
+V run(const std::string& spec, const machine::Setup& setup = s0()) {
+  const MacroRun r = runFms(blocks(spec), setup);
+  EXPECT_EQ(r.errors, V{}) << r.rendered;
+  V m = r.motion();
+  if (!m.empty() && m.back() == "END") m.pop_back();
+  return m;
+}
+
+V errorsOf(const std::string& spec) {
+  return runFms(blocks(spec), s0()).errors;
+}
+
+const V kT1{"R 200,40,0", "CCW 140,100,0 C140,40 r60 θ90", "CW 120,60,0 C90,100 r50 θ53.1301"};
+
+TEST(Fms3000Vectors_8, T1_ArcsIncrementalCentreUnderG90) {
+  EXPECT_EQ(run("G0X200Y40 · G90G17G03X140Y100I-60F300 · G02X120Y60I-50 · M30"), kT1);
+}
+
+TEST(Fms3000Vectors_8, T2_ArcsIncrementalCentreUnderG91) {
+  EXPECT_EQ(run("G0X200Y40 · G91G17G03X-60Y60I-60F300 · G02X-20Y-40I-50 · M30"), kT1);
+}
+
+TEST(Fms3000Vectors_8, T3_N3021AbsoluteCentreUnderG91) {
+  EXPECT_EQ(run("G0X200Y40 · G91G17G03X-60Y60I140J40F300 · G02X-20Y-40I90J100 · M30",
+                withParameter("N3021", 1)),
+            kT1);
+}
+
+TEST(Fms3000Vectors_8, T4_N3021CentreFollowsG90G91) {
+  EXPECT_EQ(run("G0X200Y40 · G90G17G03X140Y100I140J40F300 · G91G02X-20Y-40I-50 · M30",
+                withParameter("N3021", 2)),
+            kT1);
+  // the same program under N3021=0 reads I140 J40 from the start point: another circle
+  EXPECT_EQ(errorsOf("G0X200Y40 · G90G17G03X140Y100I140J40F300 · M30"), V{"main.fms:2:1 2012"});
+}
+
+TEST(Fms3000Vectors_8, T5_FullCircleByIjkAndArcsByR) {
+  EXPECT_EQ(run("G0X10Y0 · G2I-10F100 · G0X0Y0 · G2X10Y10R10 · G0X0Y0 · G2X10Y10R-10 · G0X0Y0 "
+                "· G3X20R-10 · M30"),
+            (V{"R 10,0,0", "CW 10,0,0 C0,0 r10 θ360", "R 0,0,0", "CW 10,10,0 C10,0 r10 θ90",
+               "R 0,0,0", "CW 10,10,0 C0,10 r10 θ270", "R 0,0,0", "CCW 20,0,0 C10,0 r10 θ180"}));
+}
+
+TEST(Fms3000Vectors_8, T6_NumbersWithoutAPointAreMillimetres) {
+  EXPECT_EQ(run("X10 G90 G1 F200 Y5.5 · Z-.5 · G91 X-10. Y+0 · M30"),
+            (V{"L 10,5.5,0 F200", "L 10,5.5,-0.5 F200", "L 0,5.5,-0.5 F200"}));
+}
+
+TEST(Fms3000Vectors_8, T7_DwellInTenthsOfASecondAfterTheMotion) {
+  EXPECT_EQ(run("G1X10F100G04E25 · G04E5 · M30"), (V{"L 10,0,0 F100", "DW 2.5s", "DW 0.5s"}));
+}
+
+TEST(Fms3000Vectors_8, T16_G55G53ModalG54AndG92) {
+  machine::Setup s = s0();
+  s.workOffsets["G55"] = {500, 200, 100};
+  EXPECT_EQ(
+      run("G90G55G00X100Y50Z20 · G53G0X0Y0 · X10 · G54G0X50Y50 · G92X0Y0 · G0X10Y10 · M30", s),
+      (V{"R 600,250,120", "R 0,0,120", "R 10,0,120", "R 50,50,120", "R 60,60,120"}));
+}
+
+TEST(Fms3000Vectors_8, T16_G53IsTheMachineSystemNotG54) {
+  machine::Setup s = s0();
+  s.workOffsets["G54"] = {1, 2, 3};
+  EXPECT_EQ(run("G0X5Y5Z5 · G53G0X0Y0Z0 · X10 · G54G0X0 · M30", s),
+            (V{"R 6,7,8", "R 0,0,0", "R 10,0,0", "R 1,0,0"}));
+}
+
+TEST(Fms3000Vectors_8, T17_LengthCompensationAndFixedPoints) {
+  machine::Setup s = s0();
+  s.tools[1].length = 50;
+  EXPECT_EQ(run("G0X30Y40Z100 · G43H1 · G0Z10 · G44H1Z10 · G49Z10 · G28X5Y5 · G30Z0 · M30", s),
+            (V{"R 30,40,100", "R 30,40,60", "R 30,40,-40", "R 30,40,10", "R 0,0,10", "R 0,0,300"}));
+}
+
+TEST(Fms3000Vectors_8, T19_MirrorAboutAPointSwapsTheArcDirection) {
+  EXPECT_EQ(run("G0X100Y0 · G67X100 · G90G1F100X110 · X140Y15 · G2X180I20J0 · G68X0 · G0X0Y0 · "
+                "M30"),
+            (V{"R 100,0,0", "L 90,0,0 F100", "L 60,15,0 F100", "CCW 20,15,0 C40,15 r20 θ180",
+               "R 0,0,0"}));
+}
+
+TEST(Fms3000Vectors_8, T20_RotationByG37AndItsCancelByA0) {
+  EXPECT_EQ(run("G37X0Y0A90 · G1X10Y0F100 · X10Y10 · G37A0 · G0X0Y0 · M30"),
+            (V{"L 0,10,0 F100", "L -10,10,0 F100", "R 0,0,0"}));
+}
+
+TEST(Fms3000Vectors_8, T20_G35EndsTheRotation) {
+  // G35 and G37 share group 06 (§10 Q19)
+  EXPECT_EQ(run("G37X0Y0A90 · G1X10Y0F100 · G35 · X10Y10 · M30"),
+            (V{"L 0,10,0 F100", "L 10,10,0 F100"}));
+}
+
+TEST(Fms3000Vectors_8, T21_ScaleFactorsPerAxisAboutTheWorkOrigin) {
+  EXPECT_EQ(run("G69X2Y2 · G1X10Y5F100 · G69X1Y1 · G1X10Y5 · M30"),
+            (V{"L 20,10,0 F100", "L 10,5,0 F100"}));
+}
+
+TEST(Fms3000Vectors_8, T24_P19AndP019AreDifferentPrograms) {
+  const MacroRun r = runFms({{"main.fms", "P19\r\nP019\r\nM30\r\n"},
+                             {"19.fms", "G91G1X1F100\r\nM99\r\n"},
+                             {"019.fms", "G91G1Y1F100\r\nM99\r\n"}},
+                            s0());
+  ASSERT_EQ(r.errors, V{}) << r.rendered;
+  EXPECT_EQ(r.motion(), (V{"L 1,0,0 F100", "L 1,1,0 F100", "END"}));
+}
+
+// The negative vectors: each raises a located error (X1E3 a warning).
+TEST(Fms3000Vectors_8, NegativeArcByRadiusZero) {
+  EXPECT_EQ(errorsOf("G2X10R0"), V{"main.fms:1:6 GCX037"});
+}
+
+TEST(Fms3000Vectors_8, NegativeChordLongerThanTwoR) {
+  EXPECT_EQ(errorsOf("G2X30Y0R10"), V{"main.fms:1:8 2015"});
+}
+
+TEST(Fms3000Vectors_8, NegativeFullCircleByR) {
+  EXPECT_EQ(errorsOf("G2R10"), V{"main.fms:1:3 2015"});
+}
+
+TEST(Fms3000Vectors_8, NegativeCentreWordWithG1) {
+  EXPECT_EQ(errorsOf("G1X10I5F100"), V{"main.fms:1:6 2015"});
+}
+
+TEST(Fms3000Vectors_8, NegativeCycleUnderG20) {
+  EXPECT_EQ(errorsOf("G20X0Y0G81U1Z-1"), V{"main.fms:1:8 FMSX02"});
+}
+
+TEST(Fms3000Vectors_8, NegativeRadiusCompensationStartingOnAnArc) {
+  // G41/G42 wait for the shared compensation stage: a located "not implemented" today
+  EXPECT_EQ(errorsOf("G41D1G2X10Y10I5"), V{"main.fms:1:1 GCX030"});
+}
+
+TEST(Fms3000Vectors_8, NegativeG28WithG92) {
+  EXPECT_EQ(errorsOf("G28X0G92X0"), V{"main.fms:1:6 GCX012"});
+}
+
+TEST(Fms3000Vectors_8, NegativeG25WithoutL) {
+  EXPECT_EQ(errorsOf("G25 L"), V{"main.fms:1:5 2004"});
+}
+
+TEST(Fms3000Vectors_8, NegativeFeedZero) {
+  EXPECT_EQ(errorsOf("G1X10F0"), V{"main.fms:1:1 2004"});
+}
+
+TEST(Fms3000Vectors_8, NegativeBlockSkip) {
+  EXPECT_EQ(errorsOf("/N10X1"), V{"main.fms:1:1 2064"});
+}
+
+TEST(Fms3000Vectors_8, NegativeMacroAssignment) {
+  EXPECT_EQ(errorsOf("#1=5"), V{"main.fms:1:1 FMSX01"});
+}
+
+TEST(Fms3000Vectors_8, NegativeChamferWithBothAxes) {
+  EXPECT_EQ(errorsOf("G166X10Z5R1"), V{"main.fms:1:1 FMSX02"});
+}
+
+TEST(Fms3000Vectors_8, NegativeX1E3IsX1WithAnUnusedE) {
+  const MacroRun r = runFms(blocks("G1X1E3F100 · M30"), s0());
+  EXPECT_EQ(r.errors, V{});
+  EXPECT_EQ(r.warnings, V{"main.fms:1:5 GCXW10"});
+  EXPECT_EQ(r.motion(), (V{"L 1,0,0 F100", "END"}));
+}
+
+} // namespace
+} // namespace gcx::test
