@@ -215,4 +215,10 @@ MacroRun runMacroAs(const Dialect& dialect, const std::map<std::string, std::str
   return runMacroUnder(dialect, files, main, watch, {}, macro::Limits{}, {});
 }
 
+MacroRun runMacroAs(const Dialect& dialect, const std::map<std::string, std::string>& files,
+                    const std::string& main, const std::vector<int>& watch,
+                    const machine::Setup& setup, const macro::Limits& limits) {
+  return runMacroUnder(dialect, files, main, watch, setup, limits, {});
+}
+
 } // namespace gcx::test

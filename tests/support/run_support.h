@@ -62,5 +62,9 @@ MacroRun runMacroLimited(const std::map<std::string, std::string>& files, const 
 /// ControlFlow): the control-flow engine under hand-made remap tables.
 MacroRun runMacroAs(const Dialect& dialect, const std::map<std::string, std::string>& files,
                     const std::string& main, const std::vector<int>& watch = {});
+/// The same with a machine setup and limits.
+MacroRun runMacroAs(const Dialect& dialect, const std::map<std::string, std::string>& files,
+                    const std::string& main, const std::vector<int>& watch,
+                    const machine::Setup& setup, const macro::Limits& limits);
 
 } // namespace gcx::test
