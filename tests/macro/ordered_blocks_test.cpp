@@ -11,6 +11,7 @@
 #include "dialect/control_flow.h"
 #include "dialect/dialect.h"
 #include "dialects/nct/profile.h"
+#include "dialects/wl4/control_flow.h"
 #include "passes/macro/expander.h"
 #include "support/hand_built_ir.h"
 #include "support/run_support.h"
@@ -69,36 +70,13 @@ private:
   std::size_t at_ = 0;
 };
 
-// WL4's control flow as its dialect folder states it: units by name, L calls with a copy of
-// the locals, M99 returns, labels written with a leading 0, no vacant state, #1-#29 local,
-// #30-#99 global, `/` blocks run only while the switch is on.
-ControlFlow wl4Flow() {
-  ControlFlow f;
-  Remap back;
-  back.address = "M";
-  back.code = 99;
-  back.action = FlowAction::Return;
-  f.remaps.rows.push_back(back);
-  f.variables = VariableSpace{1, 29, 30, 99};
-  f.variables.vacant = false;
-  f.namedUnits = true;
-  f.callFrame = LocalFrame::Copy;
-  f.assignsInExpressions = true;
-  f.isLabel = [](std::string_view digits) { return digits.size() > 1 && digits[0] == '0'; };
-  f.programFiles = [](const std::string& unit, const std::string& ext) {
-    return std::vector<std::string>{unit + ext};
-  };
-  f.programLabel = [](const std::string& unit) { return "%" + unit; };
-  return f;
-}
-
 struct HandDialect {
   static inline Profile profile;
   static inline ControlFlow flow;
   static const Profile& current() { return profile; }
   Dialect dialect;
   HandDialect() : dialect(*findDialect("nct")) {
-    flow = wl4Flow();
+    flow = wl4::controlFlow();
     profile = nct::profile();
     profile.controlFlow = &flow;
     profile.machine.skipSense = SkipSense::RunWhenOn;
