@@ -1,5 +1,7 @@
 #include "dialects/wl4/control_flow.h"
 
+#include "dialects/wl4/system_programs.h"
+
 namespace gcx::wl4 {
 
 namespace {
@@ -59,6 +61,7 @@ const ControlFlow& controlFlow() {
       return std::vector<std::string>{unit + ext};
     };
     f.programLabel = [](const std::string& unit) { return "%" + unit; };
+    f.systemProgram = &systemProgram; // %81-%89 (§5.2)
     return f;
   }();
   return flow;

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
+#include <sstream>
 
 #include "diag/codes.h"
 #include "dialect/control_flow.h"
@@ -72,9 +73,15 @@ const ProgramLibrary::Units* ProgramLibrary::loadFile(const std::string& path) {
     return nullptr;
   }
   if (loaded_.empty()) mainFolder_ = fs::path(key).parent_path().string();
+  return loadUnits(key, path, sources_.addFile(path), in);
+}
+
+const ProgramLibrary::Units* ProgramLibrary::loadUnits(const std::string& key,
+                                                       const std::string& path, FileId file,
+                                                       std::istream& in) {
   auto prog = std::make_unique<LoadedProgram>();
   prog->path = path;
-  prog->file = sources_.addFile(path);
+  prog->file = file;
   const std::size_t errorsBefore = diags_.errorCount();
   auto source = dialect_.open(in, prog->file, diags_);
   check::StaticChecker checker(dialect_.profile(), diags_);
@@ -91,8 +98,10 @@ const ProgramLibrary::Units* ProgramLibrary::loadFile(const std::string& path) {
   } else if (!splitUnits(*prog, units)) {
     return nullptr;
   }
-  for (auto& u : units)
+  for (auto& u : units) {
+    u->key = key;
     indexBlocks(*u);
+  }
   return &loaded_.emplace(key, std::move(units)).first->second;
 }
 
@@ -118,6 +127,23 @@ bool ProgramLibrary::splitUnits(LoadedProgram& whole, Units& units) {
                fmt::format("{} holds no program: a program starts with a line `%name`",
                            fs::path(whole.path).filename().string()));
   return false;
+}
+
+const LoadedProgram* ProgramLibrary::systemUnit(const std::string& unit) {
+  const ControlFlow* flow = dialect_.profile().controlFlow;
+  const auto text = flow && flow->systemProgram ? flow->systemProgram(unit) : std::nullopt;
+  if (!text) return nullptr;
+  const std::string key = "system program " + unit;
+  const Units* units = nullptr;
+  if (auto it = loaded_.find(key); it != loaded_.end()) {
+    units = &it->second;
+  } else {
+    // named like a file of the caller's kind, so messages point into the shipped program
+    const std::string name = label(unit) + " (system program)";
+    std::istringstream in{std::string(*text)};
+    units = loadUnits(key, name, sources_.addBuffer(name, std::string(*text)), in);
+  }
+  return units ? unitNamed(*units, unit) : nullptr;
 }
 
 const LoadedProgram* ProgramLibrary::unitNamed(const Units& units, const std::string& name) {
@@ -214,8 +240,11 @@ const LoadedProgram* ProgramLibrary::byUnit(const std::string& unit, const Loade
   const std::string ext = fs::path(caller.path).extension().string();
   if (!namedUnits()) return findFile(unitFiles(unit, caller), caller, where, label(unit) + ext);
   // a unit of the caller's file, then a file of the unit's name beside it holding that unit
-  if (const Units* own = loadFile(caller.path))
-    if (const LoadedProgram* p = unitNamed(*own, unit)) return p;
+  if (auto own = loaded_.find(caller.key); own != loaded_.end())
+    if (const LoadedProgram* p = unitNamed(own->second, unit)) return p;
+  // a program the dialect ships, unless the user has one of that name
+  if (locateFile(unitFiles(unit, caller), caller).empty())
+    if (const LoadedProgram* p = systemUnit(unit)) return p;
   const LoadedProgram* first = findFile(unitFiles(unit, caller), caller, where, label(unit) + ext);
   if (!first) return nullptr;
   const Units* units = loadFile(first->path);

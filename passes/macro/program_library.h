@@ -2,6 +2,7 @@
 // program, and the programs it calls, found by their unit name through the dialect's
 // ControlFlow::programFiles or by file name, each parsed and statically checked once.
 #pragma once
+#include <istream>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -18,6 +19,7 @@ struct LoadedProgram {
   FileId file = 0;
   std::string path;
   std::string name; // the unit's name (namedUnits), else empty
+  std::string key;  // the source it was read from, as the library keys it
   std::vector<ir::Block> blocks;
   /// Block number -> indices of the blocks carrying it as their first N, in file order.
   std::unordered_map<std::int64_t, std::vector<std::size_t>> labels;
@@ -58,6 +60,11 @@ private:
   /// A file's program units: one for a plain file, each `%name ... %` with named units.
   using Units = std::vector<std::unique_ptr<LoadedProgram>>;
   const Units* loadFile(const std::string& path);
+  /// Reads the units of one source (a file, or a system program's text) under `key`.
+  const Units* loadUnits(const std::string& key, const std::string& path, FileId file,
+                         std::istream& in);
+  /// A system program of the dialect named `unit`, or null.
+  const LoadedProgram* systemUnit(const std::string& unit);
   /// Splits a file's blocks into its units; false after reporting a file without one.
   bool splitUnits(LoadedProgram& whole, Units& units);
   static const LoadedProgram* unitNamed(const Units& units, const std::string& name);

@@ -218,6 +218,9 @@ struct ControlFlow {
       programFiles;
   /// How messages name program `unit` (NCT "12" -> "O0012").
   std::function<std::string(const std::string& unit)> programLabel;
+  /// The text of a program the dialect ships (WL4's canned cycles %81-%89), a file of units;
+  /// found after the user's files, so a user program of the same name overrides it.
+  std::function<std::optional<std::string_view>(const std::string& unit)> systemProgram;
 };
 
 } // namespace gcx
