@@ -12,6 +12,10 @@
 #include "dialects/nct/lexical_rules.h"
 #include "dialects/nct/profile.h"
 #include "dialects/nct/reader.h"
+#include "dialects/wl4/emitter.h"
+#include "dialects/wl4/lexical_rules.h"
+#include "dialects/wl4/profile.h"
+#include "dialects/wl4/reader.h"
 
 namespace gcx {
 
@@ -66,6 +70,17 @@ const std::vector<Dialect>& dialects() {
               },
               &fms3000::makeEmitter,
               &fms3000::emitterCapabilities,
+              {}},
+      Dialect{"wl4",
+              {".wl4"},
+              &wl4::profile,
+              &wl4::lexicalRules,
+              [](std::istream& in, FileId f, diag::Engine& d,
+                 front::Encoding e) -> std::unique_ptr<BlockSource> {
+                return std::make_unique<wl4::Reader>(in, f, d, e);
+              },
+              &wl4::makeEmitter,
+              &wl4::emitterCapabilities,
               {}},
   };
   return all;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "diag/codes.h"
+#include "dialect/control_flow.h"
 
 namespace gcx::check {
 
@@ -17,6 +18,10 @@ std::string formatNumber(double v) {
 } // namespace
 
 void StaticChecker::block(const ir::Block& b) {
+  // a file of `%name ... %` units (WL4): the lines that frame a unit stand anywhere
+  const bool units = profile_.controlFlow && profile_.controlFlow->namedUnits;
+  if (b.kind == ir::BlockKind::ProgramEnd || (units && b.kind == ir::BlockKind::ProgramStart))
+    return;
   if (b.kind == ir::BlockKind::ProgramStart) {
     // `%` opens (and by Fanuc habit may close) a tape; between blocks it is an error
     if (blocks_ > 0 && !percentAfterStart_) percentAfterStart_ = b.range;

@@ -105,10 +105,8 @@ bool Expander::call(Frame& f, const ir::Block& b, const CodeMatch& m) {
     if (tooDeep(b.range)) return false;
   } else {
     if (tooDeep(b.range)) return false;
-    if (times < 1) { // no run at all
-      ++f.pc;
-      return true;
-    }
+    if (times < 1) // no run at all
+      return advance(f);
   }
   std::vector<Value> args;
   if (r.frame == LocalFrame::Arguments) {
@@ -204,10 +202,10 @@ bool Expander::returnFromCall(Frame& f, const ir::Block& flat, const CodeMatch& 
           diag::code::BlockNotFound, p->range,
           fmt::format("block N{} not found in the calling program", emit::formatNumber(p->number)));
     caller.pc = t;
-  } else {
-    caller.pc = callBlock + 1;
+    return true;
   }
-  return true;
+  caller.pc = callBlock; // the calling block ends: its jump, or the next block
+  return advance(caller);
 }
 
 } // namespace gcx::macro

@@ -109,10 +109,11 @@ bool Expander::step() {
                 fmt::format("more than {} blocks executed: is this an endless loop? (exceeded "
                             "--max-blocks {}; raise it with --max-blocks N)",
                             limits_.maxBlocks, limits_.maxBlocks));
-  if (b.skipLevel && machine_.setup().blockSkip.count(b.skipLevel)) {
+  if (machine_.skips(b.skipLevel)) { // the dialect's sense of the skip switch
     ++f.pc;
     return true;
   }
+  if (runsInOrder(b)) return orderedBlock(f, b);
   if (!b.stmts.empty()) return statement(f, b);
   return ncBlock(f, b);
 }

@@ -21,6 +21,7 @@
 #include "passes/macro/frames.h"
 #include "passes/macro/program_library.h"
 #include "passes/macro/system_variable_store.h"
+#include "passes/macro/word_values.h"
 
 namespace gcx::macro {
 
@@ -55,6 +56,8 @@ public:
   std::optional<double> parameter(int id, std::optional<int> bit, std::optional<int> index,
                                   const SourceRange& where) override;
   std::optional<int> axisNumber(char letter, const SourceRange& where) override;
+  bool assignsInExpressions() const override { return flow_.assignsInExpressions; }
+  bool write(int number, const Value& v, const SourceRange& where) override;
 
 private:
   /// A remapped code found in a flat block, with the words its row names.
@@ -79,10 +82,19 @@ private:
   bool loopHead(Frame& f, const ir::Stmt& s);
   bool loopBack(Frame& f, std::size_t head, const SourceRange& where);
   bool jumpTo(Frame& f, const ir::Expr& label, const SourceRange& where);
+  /// The block ends: its tail (a call, then a jump) if it has one, else the next block.
+  bool advance(Frame& f);
+
+  // ordered_blocks.cpp: blocks whose words and statements run left to right (WL4)
+  static bool runsInOrder(const ir::Block& b);
+  bool orderedBlock(Frame& f, const ir::Block& b);
+  bool tailCall(const Frame& f, const ir::Stmt& s, BlockTail& tail);
+  bool tailJump(const Frame& f, const ir::Stmt& s, BlockTail& tail);
 
   // variables.cpp
   bool assign(const ir::Stmt& s);
   bool write(int number, const Value& v, const ir::Stmt& s);
+  bool store(int number, const Value& v, const SourceRange& where);
   bool message(const ir::Stmt& s, const MessageRule& rule, int variable, const Value& v);
   Value* locals() { return frames_.top(stack_.back().level); }
 
@@ -93,6 +105,12 @@ private:
   bool ncBlock(Frame& f, const ir::Block& b);
   /// Every word of b resolved to a literal (or dropped when vacant); false after reporting.
   bool flatten(const ir::Block& b, ir::Block& flat);
+  /// Whether b's words may hold a remapped code (sets remapped_), and how its words round.
+  WordOptions scanRemaps(const ir::Block& b);
+  /// w resolved to a literal and added to flat (or dropped when vacant); false after reporting.
+  bool resolveWord(const ir::Word& w, const WordOptions& opt, ir::Block& flat);
+  /// A flat block through the remap table: a call, return, modal call or the machine.
+  bool ncFlat(Frame& f, const ir::Block& b, ir::Block& flat);
   /// The interpreter's ContourSource: blocks ns..nf of the running program, flat.
   bool contour(std::int64_t ns, std::int64_t nf, std::vector<machine::ContourBlock>& out);
   CodeMatch match(const ir::Word& w, const ir::Block& flat) const;

@@ -19,6 +19,16 @@ struct Loop {
   std::uint64_t iteration; // 1 on entry
 };
 
+/// What the block at the program counter still does after its NC part, in this order
+/// (wl4.md §1.9): a call (a Call statement), then a jump (a Jump statement).
+struct BlockTail {
+  const LoadedProgram* call = nullptr;
+  std::int64_t times = 1;
+  std::string what;
+  SourceRange site;
+  std::size_t jump = static_cast<std::size_t>(-1); // the block to continue at
+};
+
 struct Frame {
   const LoadedProgram* program = nullptr;
   std::size_t pc = 0;
@@ -32,6 +42,7 @@ struct Frame {
   bool ownLocals = false;                                  // the call opened a local frame
   std::size_t modalVisible = static_cast<std::size_t>(-1); // modal calls this frame sees
   bool configured = false; // started by a code the machine parameters configure as a call
+  BlockTail tail;          // of the block at pc
 };
 
 /// A modal call registration (the remap table's Modal* rows).

@@ -23,8 +23,7 @@ bool Expander::modalBlock(Frame& f, const ir::Block& b, const ir::Block& flat, c
     if (r.modalGroup)
       machine_.setModalCode(r.modalGroup,
                             modalCalls_.empty() ? r.modalCode10 : modalCalls_.back().code10);
-    ++f.pc;
-    return true;
+    return advance(f);
   }
   const bool everyBlock = r.action == FlowAction::ModalCallEveryBlock;
   const ir::Word* p = m.program;
@@ -61,14 +60,12 @@ bool Expander::modalBlock(Frame& f, const ir::Block& b, const ir::Block& flat, c
     return execute(f, b, nc);
   }
   if (!everyBlock) { // a registration calls nothing and moves nothing in its own block (D1)
-    ++f.pc;
-    return true;
+    return advance(f);
   }
   // an every-block registration also calls at once from its own block (E1); the macro
   // returns to the next block
   if (call.times < 1) {
-    ++f.pc;
-    return true;
+    return advance(f);
   }
   return pushFrame(f, call.program, call.frame, call.args, call.times, call.what, b.range,
                    modalCalls_.size() - 1);

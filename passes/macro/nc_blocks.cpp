@@ -56,10 +56,7 @@ Expander::CodeMatch Expander::match(const ir::Word& w, const ir::Block& flat) co
   return m;
 }
 
-bool Expander::flatten(const ir::Block& b, ir::Block& flat) {
-  // resolve every value; vacant bare references drop their word (§2.5 rule 4)
-  flat = b;
-  flat.words.clear();
+WordOptions Expander::scanRemaps(const ir::Block& b) {
   bool call = false; // P is a program or sequence number in a call or return
   remapped_ = false; // a word may be remapped: ncBlock looks the words up
   for (const ir::Word& w : b.words) {
@@ -75,34 +72,46 @@ bool Expander::flatten(const ir::Block& b, ir::Block& flat) {
   }
   WordOptions opt;
   opt.callNumber = call;
-  for (const ir::Word& w : b.words) {
-    if (w.kind != ir::ValueKind::Expression && w.address != "AX") {
-      flat.words.push_back(w);
-      continue;
-    }
-    ir::Word resolved = w;
-    if (w.address == "AX") { // AX[n]=v: the axis by its number in the channel (§2.6)
-      auto n = eval_.number(w.axisIndex.front());
-      if (!n) return false;
-      static const char* const names[] = {"X", "Y", "Z", "A", "B", "C"};
-      const long k = std::lround(*n);
-      if (k < 1 || k > 6)
-        return fail("2018", w.range, fmt::format("wrong physical axis number {}", k));
-      resolved.address = names[k - 1];
-      resolved.axisIndex.clear();
-    }
-    if (resolved.kind == ir::ValueKind::Number) { // AX[e]=<literal>
-      flat.words.push_back(std::move(resolved));
-      continue;
-    }
-    WordValue v = wordValue(resolved, eval_, opt);
-    if (v.result == WordResult::Error) return false;
-    if (v.result == WordResult::Dropped) continue;
-    resolved.kind = ir::ValueKind::Number;
-    resolved.number = v.number;
-    resolved.expr = ir::Expr{};
-    flat.words.push_back(std::move(resolved));
+  return opt;
+}
+
+bool Expander::flatten(const ir::Block& b, ir::Block& flat) {
+  // resolve every value; vacant bare references drop their word (§2.5 rule 4)
+  flat = b;
+  flat.words.clear();
+  const WordOptions opt = scanRemaps(b);
+  for (const ir::Word& w : b.words)
+    if (!resolveWord(w, opt, flat)) return false;
+  return true;
+}
+
+bool Expander::resolveWord(const ir::Word& w, const WordOptions& opt, ir::Block& flat) {
+  if (w.kind != ir::ValueKind::Expression && w.address != "AX") {
+    flat.words.push_back(w);
+    return true;
   }
+  ir::Word resolved = w;
+  if (w.address == "AX") { // AX[n]=v: the axis by its number in the channel (§2.6)
+    auto n = eval_.number(w.axisIndex.front());
+    if (!n) return false;
+    static const char* const names[] = {"X", "Y", "Z", "A", "B", "C"};
+    const long k = std::lround(*n);
+    if (k < 1 || k > 6)
+      return fail("2018", w.range, fmt::format("wrong physical axis number {}", k));
+    resolved.address = names[k - 1];
+    resolved.axisIndex.clear();
+  }
+  if (resolved.kind == ir::ValueKind::Number) { // AX[e]=<literal>
+    flat.words.push_back(std::move(resolved));
+    return true;
+  }
+  WordValue v = wordValue(resolved, eval_, opt);
+  if (v.result == WordResult::Error) return false;
+  if (v.result == WordResult::Dropped) return true;
+  resolved.kind = ir::ValueKind::Number;
+  resolved.number = v.number;
+  resolved.expr = ir::Expr{};
+  flat.words.push_back(std::move(resolved));
   return true;
 }
 
@@ -138,6 +147,10 @@ bool Expander::runNcPart(const ir::Block& b, ir::Block nc, bool& stopped) {
 bool Expander::ncBlock(Frame& f, const ir::Block& b) {
   ir::Block flat;
   if (!flatten(b, flat)) return false;
+  return ncFlat(f, b, flat);
+}
+
+bool Expander::ncFlat(Frame& f, const ir::Block& b, ir::Block& flat) {
   // inside a configured call, configured codes are ordinary (§5.8 P3, P4); without
   // parameters no code is configured
   if (flow_.configuredCall && machine_.hasParameters() && !insideConfiguredCall()) {
@@ -221,8 +234,7 @@ bool Expander::execute(Frame& f, const ir::Block& b, const ir::Block& flat) {
     const std::size_t index = static_cast<std::size_t>(m - modalCalls_.data());
     return pushFrame(f, m->program, m->frame, m->args, m->times, m->what, b.range, index);
   }
-  ++f.pc;
-  return true;
+  return advance(f);
 }
 
 } // namespace gcx::macro

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
+#include <sstream>
 
 #include "diag/codes.h"
 #include "dialect/control_flow.h"
@@ -25,19 +26,62 @@ ProgramLibrary::ProgramLibrary(const Dialect& dialect, SourceManager& sources, d
                                std::vector<std::string> libraryDirs)
     : dialect_(dialect), sources_(sources), diags_(diags), libraryDirs_(std::move(libraryDirs)) {}
 
+namespace {
+
+// Block numbers and the static loop pairs of a unit (the checker has already rejected
+// unpaired loops).
+void indexBlocks(LoadedProgram& prog) {
+  prog.loopPartner.assign(prog.blocks.size(), LoadedProgram::npos);
+  std::vector<std::size_t> open;
+  for (std::size_t i = 0; i < prog.blocks.size(); ++i) {
+    const ir::Block& blk = prog.blocks[i];
+    if (blk.sequence && blk.kind == ir::BlockKind::Normal) prog.labels[*blk.sequence].push_back(i);
+    if (blk.stmts.empty()) continue;
+    const ir::StmtKind k = blk.stmts.front().kind;
+    if (k == ir::StmtKind::While || k == ir::StmtKind::Do) open.push_back(i);
+    if (k == ir::StmtKind::End) {
+      for (auto it = open.rbegin(); it != open.rend(); ++it)
+        if (prog.blocks[*it].stmts.front().loopId == blk.stmts.front().loopId) {
+          prog.loopPartner[*it] = i;
+          prog.loopPartner[i] = *it;
+          open.erase(std::next(it).base());
+          break;
+        }
+    }
+  }
+}
+
+} // namespace
+
+bool ProgramLibrary::namedUnits() const {
+  const ControlFlow* flow = dialect_.profile().controlFlow;
+  return flow && flow->namedUnits;
+}
+
 const LoadedProgram* ProgramLibrary::load(const std::string& path) {
+  const Units* units = loadFile(path);
+  return units ? units->front().get() : nullptr;
+}
+
+const ProgramLibrary::Units* ProgramLibrary::loadFile(const std::string& path) {
   std::error_code ec;
   const std::string key = fs::weakly_canonical(path, ec).string();
-  if (auto it = loaded_.find(key); it != loaded_.end()) return it->second.get();
+  if (auto it = loaded_.find(key); it != loaded_.end()) return &it->second;
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     diags_.error(diag::code::CannotRead, {}, fmt::format("{}: cannot open", path));
     return nullptr;
   }
   if (loaded_.empty()) mainFolder_ = fs::path(key).parent_path().string();
+  return loadUnits(key, path, sources_.addFile(path), in);
+}
+
+const ProgramLibrary::Units* ProgramLibrary::loadUnits(const std::string& key,
+                                                       const std::string& path, FileId file,
+                                                       std::istream& in) {
   auto prog = std::make_unique<LoadedProgram>();
   prog->path = path;
-  prog->file = sources_.addFile(path);
+  prog->file = file;
   const std::size_t errorsBefore = diags_.errorCount();
   auto source = dialect_.open(in, prog->file, diags_);
   check::StaticChecker checker(dialect_.profile(), diags_);
@@ -48,28 +92,64 @@ const LoadedProgram* ProgramLibrary::load(const std::string& path) {
   }
   checker.finish(prog->file, source->failedBlocks() > 0);
   if (diags_.errorCount() != errorsBefore) return nullptr;
-  // labels and the static loop pairs (the checker has already rejected unpaired loops)
-  prog->loopPartner.assign(prog->blocks.size(), LoadedProgram::npos);
-  std::vector<std::size_t> open;
-  for (std::size_t i = 0; i < prog->blocks.size(); ++i) {
-    const ir::Block& blk = prog->blocks[i];
-    if (blk.sequence && blk.kind == ir::BlockKind::Normal) prog->labels[*blk.sequence].push_back(i);
-    if (blk.stmts.empty()) continue;
-    const ir::StmtKind k = blk.stmts.front().kind;
-    if (k == ir::StmtKind::While || k == ir::StmtKind::Do) open.push_back(i);
-    if (k == ir::StmtKind::End) {
-      for (auto it = open.rbegin(); it != open.rend(); ++it)
-        if (prog->blocks[*it].stmts.front().loopId == blk.stmts.front().loopId) {
-          prog->loopPartner[*it] = i;
-          prog->loopPartner[i] = *it;
-          open.erase(std::next(it).base());
-          break;
-        }
+  Units units;
+  if (!namedUnits()) {
+    units.push_back(std::move(prog));
+  } else if (!splitUnits(*prog, units)) {
+    return nullptr;
+  }
+  for (auto& u : units) {
+    u->key = key;
+    indexBlocks(*u);
+  }
+  return &loaded_.emplace(key, std::move(units)).first->second;
+}
+
+bool ProgramLibrary::splitUnits(LoadedProgram& whole, Units& units) {
+  // `%name` opens a unit, `%` closes it; text between units is not part of a program (§1.2)
+  LoadedProgram* open = nullptr;
+  for (ir::Block& b : whole.blocks) {
+    if (b.kind == ir::BlockKind::ProgramStart) {
+      auto u = std::make_unique<LoadedProgram>();
+      u->file = whole.file;
+      u->path = whole.path;
+      u->name = b.programName;
+      open = u.get();
+      units.push_back(std::move(u));
+    } else if (b.kind == ir::BlockKind::ProgramEnd) {
+      open = nullptr;
+    } else if (open) {
+      open->blocks.push_back(std::move(b));
     }
   }
-  const LoadedProgram* result = prog.get();
-  loaded_.emplace(key, std::move(prog));
-  return result;
+  if (!units.empty()) return true;
+  diags_.error(diag::code::ProgramNotFound, SourceRange{SourceLoc{whole.file, 1, 1, 0}, 1},
+               fmt::format("{} holds no program: a program starts with a line `%name`",
+                           fs::path(whole.path).filename().string()));
+  return false;
+}
+
+const LoadedProgram* ProgramLibrary::systemUnit(const std::string& unit) {
+  const ControlFlow* flow = dialect_.profile().controlFlow;
+  const auto text = flow && flow->systemProgram ? flow->systemProgram(unit) : std::nullopt;
+  if (!text) return nullptr;
+  const std::string key = "system program " + unit;
+  const Units* units = nullptr;
+  if (auto it = loaded_.find(key); it != loaded_.end()) {
+    units = &it->second;
+  } else {
+    // named like a file of the caller's kind, so messages point into the shipped program
+    const std::string name = label(unit) + " (system program)";
+    std::istringstream in{std::string(*text)};
+    units = loadUnits(key, name, sources_.addBuffer(name, std::string(*text)), in);
+  }
+  return units ? unitNamed(*units, unit) : nullptr;
+}
+
+const LoadedProgram* ProgramLibrary::unitNamed(const Units& units, const std::string& name) {
+  for (const auto& u : units)
+    if (u->name == name) return u.get();
+  return nullptr;
 }
 
 std::vector<std::string> ProgramLibrary::searchFolders(const LoadedProgram& caller) const {
@@ -158,7 +238,21 @@ std::string ProgramLibrary::locate(const std::string& unit, const LoadedProgram&
 const LoadedProgram* ProgramLibrary::byUnit(const std::string& unit, const LoadedProgram& caller,
                                             const SourceRange& where) {
   const std::string ext = fs::path(caller.path).extension().string();
-  return findFile(unitFiles(unit, caller), caller, where, label(unit) + ext);
+  if (!namedUnits()) return findFile(unitFiles(unit, caller), caller, where, label(unit) + ext);
+  // a unit of the caller's file, then a file of the unit's name beside it holding that unit
+  if (auto own = loaded_.find(caller.key); own != loaded_.end())
+    if (const LoadedProgram* p = unitNamed(own->second, unit)) return p;
+  // a program the dialect ships, unless the user has one of that name
+  if (locateFile(unitFiles(unit, caller), caller).empty())
+    if (const LoadedProgram* p = systemUnit(unit)) return p;
+  const LoadedProgram* first = findFile(unitFiles(unit, caller), caller, where, label(unit) + ext);
+  if (!first) return nullptr;
+  const Units* units = loadFile(first->path);
+  if (const LoadedProgram* p = units ? unitNamed(*units, unit) : nullptr) return p;
+  diags_.error(diag::code::ProgramNotFound, where,
+               fmt::format("program {} not found: {} holds no unit {}", label(unit),
+                           fs::path(first->path).filename().string(), label(unit)));
+  return nullptr;
 }
 
 const LoadedProgram* ProgramLibrary::byName(const std::string& name, const LoadedProgram& caller,

@@ -11,11 +11,16 @@ namespace gcx::macro {
 
 std::optional<Value> Expander::read(int number, const SourceRange& where) {
   const VariableSpace& v = flow_.variables;
-  if (number == 0) return Value::empty();
-  if (number >= v.localFirst && number <= v.localLast) return locals()[number];
+  // without a vacant state a variable never written reads 0 (WL4, wl4.md §6.1)
+  const Value unset = v.vacant ? Value::empty() : Value::of(0);
+  if (number == 0 && v.vacant) return Value::empty();
+  if (number >= v.localFirst && number <= v.localLast) {
+    const Value x = locals()[number];
+    return x.vacant ? unset : x;
+  }
   if (number >= v.commonFirst && number <= v.commonLast) {
     auto it = commons_.find(number);
-    return it == commons_.end() ? Value::empty() : it->second;
+    return it == commons_.end() ? unset : it->second;
   }
   if (number < v.commonFirst || !system_) {
     diags_.error(diag::code::UndefinedVariable, where, fmt::format("#{} does not exist", number));
@@ -57,10 +62,17 @@ bool Expander::assign(const ir::Stmt& s) {
 }
 
 bool Expander::write(int number, const Value& v, const ir::Stmt& s) {
-  const SourceRange& where = s.target.range;
-  const VariableSpace& space = flow_.variables;
   if (flow_.messageVariable)
     if (auto rule = flow_.messageVariable(number)) return message(s, *rule, number, v);
+  return store(number, v, s.target.range);
+}
+
+bool Expander::write(int number, const Value& v, const SourceRange& where) {
+  return store(number, v, where); // an assignment inside an expression (wl4.md §6.4)
+}
+
+bool Expander::store(int number, const Value& v, const SourceRange& where) {
+  const VariableSpace& space = flow_.variables;
   if (number >= space.localFirst && number <= space.localLast) {
     locals()[number] = v;
     return true;
@@ -72,7 +84,7 @@ bool Expander::write(int number, const Value& v, const ir::Stmt& s) {
     commons_[number] = v;
     return true;
   }
-  if (number == 0)
+  if (number == 0 && space.vacant)
     return fail(diag::code::ReadOnlyVariable, where, "#0 is read-only (always vacant)");
   if (number < space.commonFirst || !system_)
     return fail(diag::code::UndefinedVariable, where, fmt::format("#{} does not exist", number));

@@ -87,6 +87,11 @@ inline constexpr const char* ValueOutOfRange = "GCX045";       // not finite, or
 inline constexpr const char* PathOutsideFolders = "GCX046";    // M98 <../x>, an absolute path
 inline constexpr const char* FeedPerRevolutionAtS0 = "GCX047"; // G95 move, spindle speed 0
 inline constexpr const char* ParameterMissing = "NCTX11";
+// --- WL4 (wl4.md)
+inline constexpr const char* Wl4Syntax = "GCX060";         // a WL4 block that does not parse
+inline constexpr const char* Wl4CallWord = "GCX061";       // L not nn or nnpp, or pp = 00
+inline constexpr const char* Wl4DuplicateLabel = "GCX062"; // a label twice in one program
+inline constexpr const char* Wl4ProgramName = "GCX063";    // a %name longer than 80
 
 // --- gcx: setup file (--setup FILE, src/machine/setup)
 inline constexpr const char* SetupNotJson = "GCX020";

@@ -127,6 +127,8 @@ struct VariableSpace {
   int localLast = 33; // NCT #1-#33; WL4 #1-#29
   int commonFirst = 100;
   int commonLast = 999;
+  /// false: a variable never written reads 0, there is no vacant state (WL4, wl4.md §6.1).
+  bool vacant = true;
   /// Slots of a local frame (indices 0..frameSize-1; NCT 34 for #1-#33).
   int frameSize() const { return localLast + 1; }
 };
@@ -179,6 +181,17 @@ struct ControlFlow {
   VariableSpace variables;
   /// Words that mark a file as needing the expansion pass (calls, loops, jumps, prints).
   std::vector<std::string> expansionMarkers;
+  /// A file is a sequence of program units `%name ... %` (WL4, wl4.md §1.2): the library
+  /// loads units and finds a called one by name in the caller's file first. Otherwise a file
+  /// is one program.
+  bool namedUnits = false;
+  /// The local frame a Call statement (WL4 `L0703`) gives the program it calls.
+  LocalFrame callFrame = LocalFrame::Shared;
+  /// `#n=e` may stand inside an expression and assigns there (WL4, wl4.md §6.4).
+  bool assignsInExpressions = false;
+  /// Whether a block number is a label a Jump statement may reach (WL4: written with a leading
+  /// 0, `N010`, wl4.md §1.8); null: every block number is.
+  std::function<bool(std::string_view sequenceText)> isLabel;
 
   /// The rule of a message variable #n, nullopt for an ordinary variable.
   std::function<std::optional<MessageRule>(int number)> messageVariable;
@@ -205,6 +218,9 @@ struct ControlFlow {
       programFiles;
   /// How messages name program `unit` (NCT "12" -> "O0012").
   std::function<std::string(const std::string& unit)> programLabel;
+  /// The text of a program the dialect ships (WL4's canned cycles %81-%89), a file of units;
+  /// found after the user's files, so a user program of the same name overrides it.
+  std::function<std::optional<std::string_view>(const std::string& unit)> systemProgram;
 };
 
 } // namespace gcx

@@ -94,6 +94,7 @@ struct DwellRule {
   const char* missingMessage = "";
   char rejectedWord = 0;
   const char* rejectedMessage = "";
+  char alternateWord = 0; // another word that may carry the time (WL4's cycles write G4 X)
 };
 
 /// The words of the programmable transformations (rotation, scaling).

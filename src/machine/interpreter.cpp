@@ -574,6 +574,7 @@ bool Interpreter::applyNonMotion(const BlockWords& w, bool& consumed) {
     if (const ir::Word* x = dwell.rejectedWord ? w.letter(dwell.rejectedWord) : nullptr)
       return fail(diag::code::DwellWithoutP, x->range, dwell.rejectedMessage);
     const ir::Word* time = w.letter(dwell.word);
+    if (!time && dwell.alternateWord) time = w.letter(dwell.alternateWord);
     if (!time) return fail(diag::code::MissingData, g->range, dwell.missingMessage);
     if (profile_.machine.dwellAfterMotion) {
       pendingDwell_ = time->number * dwell.secondsPerUnit; // executeBlock, after the motion

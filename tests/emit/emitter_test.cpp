@@ -53,7 +53,8 @@ TEST(NctEmitter, WritesEachBlockAsTheNctPrinterDoesAndNothingElse) {
 }
 
 TEST(Registry, FindsDialectsByNameAndExtension) {
-  EXPECT_EQ(dialectNames(), (std::vector<std::string>{"nct", "fms3000"}));
+  EXPECT_EQ(dialectNames(), (std::vector<std::string>{"nct", "fms3000", "wl4"}));
+  EXPECT_EQ(dialectForPath("PART.WL4"), findDialect("wl4"));
   ASSERT_NE(findDialect("nct"), nullptr);
   EXPECT_EQ(findDialect("nct")->name, "nct");
   EXPECT_EQ(findDialect("NCT"), nullptr);

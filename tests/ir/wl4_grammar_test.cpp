@@ -24,19 +24,8 @@ std::string dump(const ir::Block& b) {
   return ir::toJson(b, true).dump();
 }
 
-ir::Stmt jump(std::string label) {
-  ir::Stmt s = hand::stmt(ir::StmtKind::Jump);
-  s.value = num(std::stod(label));
-  s.label = std::move(label);
-  return s;
-}
-
-ir::Stmt guard(ir::Expr cond, std::optional<int> precision = {}) {
-  ir::Stmt s = hand::stmt(ir::StmtKind::Guard);
-  s.value = std::move(cond);
-  s.precision = precision;
-  return s;
-}
+using hand::guard;
+using hand::jump;
 
 TEST(Wl4Grammar_6_8, SeveralProgramsInOneFile) {
   // file = { "%" name EOL { line } "%" EOL }: a file is a sequence of named programs (§1.2)

@@ -1,6 +1,7 @@
 // Builds IR by hand, as a front end would, for dialects whose front ends do not exist yet: each
 // item gets the next place in the block's source order.
 #pragma once
+#include <optional>
 #include <ostream>
 #include <string>
 #include <utility>
@@ -90,6 +91,28 @@ inline ir::Stmt assignment(ir::Expr target, ir::Expr value) {
   ir::Stmt s = stmt(ir::StmtKind::Assign);
   s.target = std::move(target);
   s.value = std::move(value);
+  return s;
+}
+
+/// WL4 `IF<p> (cond)`: the items after it run only when cond holds
+inline ir::Stmt guard(ir::Expr cond, std::optional<int> precision = {}) {
+  ir::Stmt s = stmt(ir::StmtKind::Guard);
+  s.value = std::move(cond);
+  s.precision = precision;
+  return s;
+}
+/// WL4 `N17` that is not first: continue at label 17 (`N017`) after the block
+inline ir::Stmt jump(std::string label) {
+  ir::Stmt s = stmt(ir::StmtKind::Jump);
+  s.value = num(std::stod(label));
+  s.label = std::move(label);
+  return s;
+}
+/// WL4 `L0703`: program "07" three times after the block
+inline ir::Stmt callUnit(std::string unit, double times) {
+  ir::Stmt s = stmt(ir::StmtKind::Call);
+  s.callee = std::move(unit);
+  s.value = num(times);
   return s;
 }
 

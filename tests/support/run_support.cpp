@@ -221,4 +221,10 @@ MacroRun runMacroWith(const Dialect& dialect, const std::map<std::string, std::s
   return runMacroUnder(dialect, files, main, {}, setup, macro::Limits{}, {});
 }
 
+MacroRun runMacroAs(const Dialect& dialect, const std::map<std::string, std::string>& files,
+                    const std::string& main, const std::vector<int>& watch,
+                    const machine::Setup& setup, const macro::Limits& limits) {
+  return runMacroUnder(dialect, files, main, watch, setup, limits, {});
+}
+
 } // namespace gcx::test

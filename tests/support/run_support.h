@@ -66,5 +66,9 @@ MacroRun runMacroAs(const Dialect& dialect, const std::map<std::string, std::str
 /// The same with a machine setup (another dialect's own programs and parameters).
 MacroRun runMacroWith(const Dialect& dialect, const std::map<std::string, std::string>& files,
                       const std::string& main, const machine::Setup& setup);
+/// The same with a machine setup and limits.
+MacroRun runMacroAs(const Dialect& dialect, const std::map<std::string, std::string>& files,
+                    const std::string& main, const std::vector<int>& watch,
+                    const machine::Setup& setup, const macro::Limits& limits);
 
 } // namespace gcx::test

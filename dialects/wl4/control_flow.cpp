@@ -1,0 +1,70 @@
+#include "dialects/wl4/control_flow.h"
+
+#include "dialects/wl4/system_programs.h"
+
+namespace gcx::wl4 {
+
+namespace {
+
+RemapTable remaps() {
+  RemapTable t;
+  Remap back;
+  back.address = "M";
+  back.code = 99;
+  back.action = FlowAction::Return;
+  back.spec = "wl4.md §6.7";
+  t.rows.push_back(back);
+  // G81-G89 select the cycle; every later block with axis words runs its own motion, then
+  // program %8n with a copy of the locals, until G80 (§5.1)
+  for (int g = 81; g <= 89; ++g) {
+    Remap cycle;
+    cycle.address = "G";
+    cycle.code = g;
+    cycle.action = FlowAction::ModalCall;
+    cycle.program = ProgramSource::CodeDigits;
+    cycle.frame = LocalFrame::Copy;
+    cycle.registerRunsBlock = true;
+    cycle.modalGroup = 7;
+    cycle.modalCode10 = g * 10;
+    cycle.spec = "wl4.md §5.1";
+    t.rows.push_back(cycle);
+  }
+  Remap cancel;
+  cancel.address = "G";
+  cancel.code = 80;
+  cancel.action = FlowAction::ModalCancel;
+  cancel.modalGroup = 7;
+  cancel.modalCode10 = 800;
+  cancel.spec = "wl4.md §5.1";
+  t.rows.push_back(cancel);
+  return t;
+}
+
+} // namespace
+
+bool isLabel(std::string_view sequenceText) {
+  return sequenceText.size() > 1 && sequenceText[0] == '0';
+}
+
+const ControlFlow& controlFlow() {
+  static const ControlFlow flow = [] {
+    ControlFlow f;
+    f.remaps = remaps();
+    f.variables = VariableSpace{1, 29, 30, 99}; // locals, globals; system from #100 (§6.1)
+    f.variables.vacant = false;                 // user variables are 0 at the start
+    f.expansionMarkers = {"%"};                 // every file is a sequence of %-programs
+    f.namedUnits = true;
+    f.callFrame = LocalFrame::Copy; // L: the callee gets a copy of the caller's locals (§6.7)
+    f.assignsInExpressions = true;  // X#1=(...) (§6.4)
+    f.isLabel = &isLabel;
+    f.programFiles = [](const std::string& unit, const std::string& ext) {
+      return std::vector<std::string>{unit + ext};
+    };
+    f.programLabel = [](const std::string& unit) { return "%" + unit; };
+    f.systemProgram = &systemProgram; // %81-%89 (§5.2)
+    return f;
+  }();
+  return flow;
+}
+
+} // namespace gcx::wl4

@@ -1,0 +1,39 @@
+#include "dialects/wl4/machine_rules.h"
+
+namespace gcx::wl4 {
+
+namespace {
+
+std::vector<MCodeSpec> mcodes() {
+  using A = MAction;
+  using T = MTiming;
+  // Table 4 (wl4.md §2.3); its timing columns were lost, the timing is the spec's [D]
+  return {
+      {0, A::Stop, T::AfterMotion},        {1, A::OptionalStop, T::AfterMotion},
+      {2, A::End, T::AfterMotion},         {30, A::EndRewind, T::AfterMotion},
+      {3, A::SpindleCW, T::BeforeMotion},  {4, A::SpindleCCW, T::BeforeMotion},
+      {5, A::SpindleStop, T::AfterMotion}, {19, A::SpindleOrient, T::BeforeMotion},
+      {6, A::ToolChange, T::BeforeMotion}, {7, A::Coolant, T::BeforeMotion},
+      {8, A::Coolant, T::BeforeMotion},    {9, A::Coolant, T::AfterMotion},
+      {99, A::Subprogram, T::AfterMotion},
+  };
+}
+
+} // namespace
+
+MachineRules machineRules() {
+  MachineRules r;
+  r.settings = {{Setting::ArcRadiusTolerance, "arc_tolerance", nullptr, 0.002,
+                 "arc end-point tolerance"}}; // wl4.md §0.2
+  r.parameterKeyPrefix = "P";
+  r.mcodes = mcodes();
+  r.speedTiming = r.toolTiming = MTiming::BeforeMotion;
+  r.skipSense = SkipSense::RunWhenOn; // `/` blocks run only with the flag set (§1.7)
+  // G4 E<seconds> (002:979); the cycle texts write G4 X (§10 item 5): both read as seconds
+  r.dwell = {'E', 1, "G4 without E (seconds)", 0, "", 'X'};
+  r.arcL = ArcLMeaning::None; // L is a call, never an arc word
+  r.workOffsetNames = {"G54", "G55", "G56", "G57", "G58", "G59"};
+  return r;
+}
+
+} // namespace gcx::wl4

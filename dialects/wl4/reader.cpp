@@ -1,0 +1,37 @@
+#include "dialects/wl4/reader.h"
+
+#include <fmt/format.h>
+
+#include "diag/codes.h"
+#include "dialects/wl4/block_parser.h"
+#include "dialects/wl4/control_flow.h"
+#include "dialects/wl4/lexical_rules.h"
+
+namespace gcx::wl4 {
+
+Reader::Reader(std::istream& in, FileId file, diag::Engine& diags,
+               std::optional<front::Encoding> encoding)
+    : bytes_(in, file, diags, lexicalRules(), encoding.value_or(lexicalRules().encoding)),
+      diags_(diags) {}
+
+bool Reader::next(ir::Block& out) {
+  while (bytes_.next(raw_)) {
+    if (raw_.failed || !parseBlock(raw_, out, diags_) || duplicateLabel(out)) {
+      ++failed_;
+      continue;
+    }
+    return true;
+  }
+  return false;
+}
+
+bool Reader::duplicateLabel(const ir::Block& b) {
+  if (b.kind == ir::BlockKind::ProgramStart) labels_.clear(); // labels are per program
+  const bool label = b.sequence && isLabel(b.sequenceText);
+  if (!label || labels_.insert(*b.sequence).second) return false;
+  diags_.error(diag::code::Wl4DuplicateLabel, b.sequenceRange,
+               fmt::format("label {} appears twice in this program (wl4.md §1.8)", *b.sequence));
+  return true;
+}
+
+} // namespace gcx::wl4
