@@ -162,8 +162,8 @@ TEST(Fms3000Vectors_8, NegativeCycleUnderG20) {
 }
 
 TEST(Fms3000Vectors_8, NegativeRadiusCompensationStartingOnAnArc) {
-  // G41/G42 wait for the shared compensation stage: a located "not implemented" today
-  EXPECT_EQ(errorsOf("G41D1G2X10Y10I5"), V{"main.fms:1:1 GCX030"});
+  // the shared compensation stage refuses a start-up on an arc (fms3000.md §4.2)
+  EXPECT_EQ(errorsOf("G41D1G2X10Y10I5"), V{"main.fms:1:1 GCX072"});
 }
 
 TEST(Fms3000Vectors_8, NegativeG28WithG92) {
