@@ -222,6 +222,11 @@ bool Parser::item() {
     return true;
   }
   if (c == '#') return assignment(at);
+  if (c == '(') { // a Fanuc comment? In WL4 `(` only opens an expression (§1.6, §9)
+    diags_.warning(diag::code::Wl4FanucComment, range(at, 1),
+                   "`( )` is no comment in WL4: comments start with $ (a Fanuc comment?)");
+    return syntax(at, 1, "'(' where a word would start: `(` opens an expression after an address");
+  }
   if (!isLetter(c))
     return syntax(at, 1,
                   fmt::format("unexpected {}: a word starts with an address letter", found()));

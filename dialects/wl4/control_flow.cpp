@@ -24,6 +24,7 @@ RemapTable remaps() {
     cycle.program = ProgramSource::CodeDigits;
     cycle.frame = LocalFrame::Copy;
     cycle.registerRunsBlock = true;
+    cycle.replacesModalCall = true; // one cycle at a time in group 7
     cycle.modalGroup = 7;
     cycle.modalCode10 = g * 10;
     cycle.spec = "wl4.md §5.1";

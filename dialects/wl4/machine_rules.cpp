@@ -31,7 +31,8 @@ MachineRules machineRules() {
   r.skipSense = SkipSense::RunWhenOn; // `/` blocks run only with the flag set (§1.7)
   // G4 E<seconds> (002:979); the cycle texts write G4 X (§10 item 5): both read as seconds
   r.dwell = {'E', 1, "G4 without E (seconds)", 0, "", 'X'};
-  r.arcL = ArcLMeaning::None; // L is a call, never an arc word
+  r.arcL = ArcLMeaning::None;            // L is a call, never an arc word
+  r.workOffsetEndsSetCoordinates = true; // G92 is cancelled by G53-G59 (§3.11)
   r.workOffsetNames = {"G54", "G55", "G56", "G57", "G58", "G59"};
   return r;
 }

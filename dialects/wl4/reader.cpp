@@ -5,6 +5,7 @@
 #include "diag/codes.h"
 #include "dialects/wl4/block_parser.h"
 #include "dialects/wl4/control_flow.h"
+#include "dialects/wl4/fanuc_traps.h"
 #include "dialects/wl4/lexical_rules.h"
 
 namespace gcx::wl4 {
@@ -20,6 +21,7 @@ bool Reader::next(ir::Block& out) {
       ++failed_;
       continue;
     }
+    warnFanucTraps(out, diags_);
     return true;
   }
   return false;

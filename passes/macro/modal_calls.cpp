@@ -49,6 +49,7 @@ bool Expander::modalBlock(Frame& f, const ir::Block& b, const ir::Block& flat, c
     if (!bind(site, call.args)) return false;
   }
   call.what = describe(m, unit);
+  if (r.replacesModalCall && !modalCalls_.empty()) modalCalls_.pop_back();
   modalCalls_.push_back(call);
   if (r.modalGroup) machine_.setModalCode(r.modalGroup, r.modalCode10);
   if (r.registerRunsBlock) { // the block's own words run, a move among them calls (WL4)

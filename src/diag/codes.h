@@ -92,6 +92,10 @@ inline constexpr const char* Wl4Syntax = "GCX060";         // a WL4 block that d
 inline constexpr const char* Wl4CallWord = "GCX061";       // L not nn or nnpp, or pp = 00
 inline constexpr const char* Wl4DuplicateLabel = "GCX062"; // a label twice in one program
 inline constexpr const char* Wl4ProgramName = "GCX063";    // a %name longer than 80
+inline constexpr const char* Wl4FanucComment = "GCXW20";     // `(` where a word would start
+inline constexpr const char* Wl4WholeMillimetres = "GCXW21"; // X1030 is 1030 mm
+inline constexpr const char* Wl4FanucReturnLevel = "GCXW22"; // G98/G99
+inline constexpr const char* Wl4FanucCall = "GCXW23";        // M98 is no call
 
 // --- gcx: setup file (--setup FILE, src/machine/setup)
 inline constexpr const char* SetupNotJson = "GCX020";

@@ -86,6 +86,9 @@ struct Remap {
   /// ModalCall: the registering block's other words run, and a move among them makes the
   /// first call (WL4 `G81 X10`, wl4.md §5.1); otherwise the block only registers (NCT G66).
   bool registerRunsBlock = false;
+  /// ModalCall: the registration replaces the one in force instead of nesting on it (WL4's
+  /// group 7 holds one cycle: G81 then G83 drills by %83 only, and G80 cancels it).
+  bool replacesModalCall = false;
   const char* spec = ""; // where the dialect specifies the row, for messages
 };
 

@@ -161,6 +161,9 @@ struct MachineRules {
   int surfaceSpeedAxis = 0;
   /// S in a set-coordinates block is the constant surface speed's spindle limit.
   bool setCoordinatesSIsSpindleLimit = false;
+  /// Selecting a work offset (or the machine system) ends the set-coordinates shift (WL4:
+  /// G92 is cancelled by G53-G59); otherwise the shift holds in every work system.
+  bool workOffsetEndsSetCoordinates = false;
   /// The setup's names of the work offsets: the standard ones 1..n in order, and the prefix of
   /// the numbered extended ones (prefix + number).
   std::vector<std::string> workOffsetNames;

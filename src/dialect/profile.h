@@ -41,6 +41,8 @@ enum class GAction : unsigned char {
   Linear,
   ArcCW,
   ArcCCW,
+  FilletCW,  // a 90° arc to the end point, its centre a corner of the quadrant (WL4 G12)
+  FilletCCW, // (WL4 G13)
   Dwell,
   ExactStopOnce,
   DataInput,
@@ -72,6 +74,7 @@ enum class GAction : unsigned char {
   ScaleOn,
   MirrorOff,
   MirrorOn,
+  MirrorBySign, // per axis word: -1 mirrors the axis about 0, 1 ends it; S: spindle limit (WL4 G51)
   RotateOn,
   RotateOff,
   PolarOff,

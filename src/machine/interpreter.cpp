@@ -326,6 +326,8 @@ bool Interpreter::setModal(const GCodeSpec& g) {
   case GAction::Linear:
   case GAction::ArcCW:
   case GAction::ArcCCW:
+  case GAction::FilletCW:
+  case GAction::FilletCCW:
     state_.motion = g.action;
     if (state_.cycle == GAction::DrillCycle) cancelCycleMode(); // like G80 (000:9479-9480)
     return true;
@@ -409,7 +411,10 @@ bool Interpreter::applyModal(const BlockWords& w) {
     if (g->group > 0 && g->group < static_cast<int>(modalCodes_.size()))
       modalCodes_[g->group] = g->code10;
     if (setModal(*g)) {
-      if (g->action == GAction::WorkOffset) reexpress();
+      if (g->action == GAction::WorkOffset) {
+        if (profile_.machine.workOffsetEndsSetCoordinates) offsets_.g92 = Vec3::Zero();
+        reexpress();
+      }
       continue;
     }
     switch (g->action) {
@@ -431,6 +436,7 @@ bool Interpreter::applyModal(const BlockWords& w) {
     case GAction::ScaleOff:
     case GAction::MirrorOn:
     case GAction::MirrorOff:
+    case GAction::MirrorBySign:
     case GAction::Dwell:
     case GAction::DataInput:
     case GAction::DataInputEnd:
@@ -512,6 +518,7 @@ bool Interpreter::transforms(const BlockWords& w) {
       if (w.axis[a]) mask |= 1u << a;
     transforms_.mirror(mask, centre(true));
   }
+  if (w.has(GAction::MirrorBySign) && !mirrorBySign(w)) return false;
   if (const ir::Word* g = w.findAction(GAction::MirrorOff)) {
     if (transforms_.rotating() || transforms_.scaling())
       return fail(diag::code::MirrorWithTransform, g->range,
@@ -568,7 +575,7 @@ bool Interpreter::transforms(const BlockWords& w) {
 
 bool Interpreter::applyNonMotion(const BlockWords& w, bool& consumed) {
   consumed = w.has(GAction::RotateOn) || w.has(GAction::ScaleOn) || w.has(GAction::MirrorOn) ||
-             w.has(GAction::MirrorOff);
+             w.has(GAction::MirrorOff) || w.has(GAction::MirrorBySign);
   if (const ir::Word* g = w.findAction(GAction::Dwell)) {
     const DwellRule& dwell = profile_.machine.dwell;
     if (const ir::Word* x = dwell.rejectedWord ? w.letter(dwell.rejectedWord) : nullptr)
@@ -944,6 +951,9 @@ bool Interpreter::move(const BlockWords& w) {
     const motion::PlaneAxes ax = motion::axesOf(state_.plane);
     return arc(w, to, extraTo, axisGiven(w, ax.first) || axisGiven(w, ax.second));
   }
+  case GAction::FilletCW:
+  case GAction::FilletCCW:
+    return fillet(to, extraTo);
   case GAction::TurningCycle:
     return turningCycle(static_cast<cycles::TurningCycle>(turningMode_->arg), w);
   default:

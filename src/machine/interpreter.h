@@ -207,6 +207,11 @@ private:
   bool move(const BlockWords& w);
   bool arc(const BlockWords& w, const Vec3& target, const motion::Extra& extraEnd,
            bool haveInPlaneEnd);
+  /// WL4 G51 (mirror_by_sign.cpp): X-1 mirrors X about 0, X1 ends it; S limits the spindle.
+  bool mirrorBySign(const BlockWords& w);
+  /// A quarter-circle fillet to `end` (fillet.cpp): the centre is the corner of the quadrant
+  /// the two points bound that gives the programmed direction (wl4.md §3.5).
+  bool fillet(const Vec3& end, const motion::Extra& extraEnd);
   /// The arc from the current position about `centre` (program coordinates) to `end`.
   bool arcTo(const Vec3& end, const Vec3& centre, bool cw, int turns, const motion::Extra& extraEnd,
              double feed);

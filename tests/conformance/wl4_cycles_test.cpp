@@ -67,6 +67,32 @@ TEST(Wl4Cycles_5_1, ABlockWithoutAxisWordsOnlySelectsTheCycle) {
   EXPECT_EQ(r.motion(), (V{"R 0,0,10", "R 5,0,10", "R 5,0,3", "L 5,0,-5 F60", "R 5,0,3", "END"}));
 }
 
+TEST(Wl4Cycles_5_1, ANewCycleReplacesTheOneInForceAndG80EndsIt) {
+  // G81 then G83: the hole at X5 is drilled by %83 only; after G80 nothing drills
+  MacroRun r = runWl4("%P\nG90 G0 X0 Y0 Z10\nG81 #2=1 #3=-2 #5=5 F100\nG83\nX5\nG80\nX9\nM2\n%\n");
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(r.motion(),
+            (V{"R 0,0,10", "R 5,0,10", "R 5,0,1", "L 5,0,-2 F100", "R 5,0,1", "R 9,0,1", "END"}));
+}
+
+TEST(Wl4Cycles_Examples, TheFlangeDrillsSixHolesOnItsBoltCircle) {
+  MacroRun r = runWl4(readFile(sourceDir() / "examples" / "wl4" / "FLANGE.wl4"));
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(r.rendered, ""); // no warning either
+  V holes;
+  for (const std::string& m : r.motion())
+    if (m.rfind("L ", 0) == 0) holes.push_back(m);
+  EXPECT_EQ(holes, (V{"L 90,50,-12 F90", "L 70,84.641,-12 F90", "L 30,84.641,-12 F90",
+                      "L 10,50,-12 F90", "L 30,15.359,-12 F90", "L 70,15.359,-12 F90"}));
+}
+
+TEST(Wl4Cycles_Examples, ThePlateRunsCleanly) {
+  MacroRun r = runWl4(readFile(sourceDir() / "examples" / "wl4" / "PLATE.wl4"));
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(r.rendered, "");
+  EXPECT_EQ(r.motion().back(), "END");
+}
+
 TEST(Wl4Cycles_5_2, EveryShippedProgramReadsCleanlyAsTheUnitItIsCalled) {
   std::vector<std::string> units;
   for (const wl4::SystemProgramText& p : wl4::systemProgramTexts()) {
