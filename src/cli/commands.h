@@ -29,13 +29,14 @@ struct CommonOptions {
   int maxDepth = 16;             // --max-depth: nested calls (the manual's 16)
   std::string printFile;         // --print: DPRNT output (default: standard output)
   bool fanucVacantOrder = false; // --vacant-order fanuc (nct-macro.md §12 Q1)
+  bool keepCompensation = false; // expand --keep comp: G41/G42 stay for the target
 };
 
 struct ExpandOptions {
   CommonOptions common;
   std::string to;
   std::string expand = "macros,subprograms"; // --to nct: what to flatten
-  std::string keep;                          // --keep cycles: structure the target keeps
+  std::string keep;                          // --keep cycles | comp: structure the target keeps
   std::string output;                        // empty: standard output
   std::string setup;
   bool provenance = false;
