@@ -441,6 +441,9 @@ bool Interpreter::applyModal(const BlockWords& w) {
     case GAction::RadiusCompRight:
       state_.radiusComp = g->action; // radiusCompensation() starts the stage
       break;
+    case GAction::CornerArc:
+    case GAction::VectorHold:
+      break; // radiusCompensation()
     case GAction::DrillCycle:
       state_.cycle = g->action; // drillBlock() stores the block's data and drills
       break;

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "diag/codes.h"
+#include "emit/number.h"
 #include "machine/interpreter.h"
 #include "machine/settings.h"
 #include "motion/geometry.h"
@@ -29,6 +30,11 @@ bool Interpreter::compensationFailed(const CompensationFailure& f) {
 
 bool Interpreter::radiusCompensation(const BlockWords& w, const ModalState& before) {
   const bool on = state_.radiusComp != GAction::RadiusCompOff;
+  for (GAction a : {GAction::CornerArc, GAction::VectorHold})
+    if (const ir::Word* g = w.findAction(a); g && (!on || keepCompensation_))
+      return fail(diag::code::CompOnlyCode, g->range,
+                  fmt::format("G{} acts only while radius compensation (G41/G42) is on",
+                              emit::formatNumber(g->number)));
   if (!on && !comp_.engaged() && keptSide_ == 0) return true;
   if (!comp_.beginBlock(*sink_)) return compensationFailed(*comp_.failure());
   const motion::PlaneAxes ax = motion::axesOf(state_.plane);
@@ -108,6 +114,18 @@ bool Interpreter::radiusCompensation(const BlockWords& w, const ModalState& befo
   breaks = breaks || (state_.cycle == GAction::DrillCycle && !deferCycles_) || pendingTurning_ ||
            state_.motion == GAction::TurningCycle;
   if (breaks) comp_.breakLookAhead(*sink_);
+  // G39 corner arc, G38 vector hold (nct.md §3.17.5)
+  for (GAction a : {GAction::CornerArc, GAction::VectorHold}) {
+    const ir::Word* g = w.findAction(a);
+    if (!g) continue;
+    if (a == GAction::CornerArc && (w.hasAxisWord() || w.ijk[0] || w.ijk[1] || w.ijk[2]))
+      return fail(diag::code::NotImplemented, g->range,
+                  "G39 stands in a block of its own; its I J K end vector is not implemented yet");
+    if (a == GAction::CornerArc)
+      comp_.cornerArc();
+    else
+      comp_.holdVector();
+  }
   if (comp_.failure()) return compensationFailed(*comp_.failure());
   comp_.setMode(state_.plane, side, radius, direction);
   // in-plane words without in-plane displacement (nct.md §3.17.1, 000:7625-7641)
