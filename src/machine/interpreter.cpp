@@ -311,7 +311,7 @@ bool Interpreter::executeBlock(const ir::Block& block) {
   const bool arcWithCentreOnly =
       (state_.motion == GAction::ArcCW || state_.motion == GAction::ArcCCW) &&
       (w.ijk[0] || w.ijk[1] || w.ijk[2]);
-  if (!consumed && (w.hasAxisWord() || arcWithCentreOnly))
+  if (!consumed && (w.hasAxisWord() || arcWithCentreOnly || w.angle)) // ,A alone: a direction
     if (!move(w)) return false;
   return afterMotion(w);
 }
@@ -1177,6 +1177,11 @@ void Interpreter::message(const std::string& text, const motion::Provenance& fro
 
 void Interpreter::finish() {
   if (ended_) return;
+  if (directionLine_) { // a line by ,A alone never met the line that ends it (nct.md §4.3)
+    fail(diag::code::NotImplemented, blockRange_,
+         "the program ends after a line given by its direction alone");
+    return;
+  }
   ended_ = true;
   motion::Event e;
   e.kind = Kind::End;

@@ -319,6 +319,13 @@ private:
   int lockedFrom_ = 0;                        // the group-15 code a tapping cycle's G63 replaced
   bool deferCycles_ = false;
   bool keepCompensation_ = false;
+  struct DirectionLine { // a line by ,A alone, waiting for the line that ends it (§4.3)
+    double degrees;
+    motion::Provenance from;
+    GAction motion;
+    double feed;
+  };
+  std::optional<DirectionLine> directionLine_;
   int keptSide_ = 0; // the side and radius of the last RadiusComp event
   double keptRadius_ = 0;
   bool ended_ = false;
