@@ -95,8 +95,8 @@ Profile build() {
       {300, 0, "2nd/3rd/4th reference return", A::OtherReferenceReturn},
       {310, 0, "skip"},
       {370, 0, "tool length measurement"},
-      {380, 0, "keep compensation vector"},
-      {390, 0, "corner arc"},
+      {380, 0, "keep compensation vector", A::VectorHold}, // nct.md §3.17.5
+      {390, 0, "corner arc", A::CornerArc},
       {400, 7, "radius compensation off", A::RadiusCompOff},
       {410, 7, "radius compensation left", A::RadiusCompLeft},
       {420, 7, "radius compensation right", A::RadiusCompRight},

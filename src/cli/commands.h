@@ -30,13 +30,14 @@ struct CommonOptions {
   std::string printFile;         // --print: DPRNT output (default: standard output)
   bool fanucVacantOrder = false; // --vacant-order fanuc (nct-macro.md §12 Q1)
   unsigned jobs = 1;             // --jobs: 2 reads on its own thread (the default on 2+ cores)
+  bool keepCompensation = false; // expand --keep comp: G41/G42 stay for the target
 };
 
 struct ExpandOptions {
   CommonOptions common;
   std::string to;
   std::string expand = "macros,subprograms"; // --to nct: what to flatten
-  std::string keep;                          // --keep cycles: structure the target keeps
+  std::string keep;                          // --keep cycles | comp: structure the target keeps
   std::string output;                        // empty: standard output
   std::string setup;
   bool provenance = false;

@@ -149,6 +149,7 @@ bool expandProgram(Session& s, const CommonOptions& opt, const machine::Setup& s
   machine::Interpreter interp(s.dialect().profile(), setup, sink, s.diags());
   framed.bind(interp);
   limitMachine(interp, opt, programSize(s));
+  interp.setKeepCompensation(opt.keepCompensation);
   macro::Expander expander(library, interp, s.diags(), expansionLimits(opt));
   expander.setPrintOutput(&printOut);
   if (opt.fanucVacantOrder) expander.setVacantOrder(macro::VacantOrder::Fanuc);
@@ -168,6 +169,7 @@ bool executeProgram(Session& s, const CommonOptions& opt, const machine::Setup& 
   machine::Interpreter interp(s.dialect().profile(), setup, sink, s.diags());
   framed.bind(interp);
   limitMachine(interp, opt, programSize(s));
+  interp.setKeepCompensation(opt.keepCompensation);
   runBlocks(StreamStages{s.source(), checker, interp, s.diags()}, opt.jobs);
   if (s.diags().hasErrors()) return false;
   if (!interp.ended()) {

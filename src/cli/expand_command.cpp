@@ -99,14 +99,21 @@ int runExpand(const std::string& file, const ExpandOptions& opt) {
     return UsageError;
   }
   const bool keepsCycles = target && target->emits().has(emit::Construct::CannedCycles);
-  if (!opt.keep.empty() && (opt.keep != "cycles" || !keepsCycles)) {
-    reportUsage(opt.keep != "cycles"
-                    ? "--keep takes cycles"
+  // canonical motion is RS274/NGC: LinuxCNC compensates itself (G41.1/G42.1)
+  const bool keepsComp = opt.keep == "comp" && !target;
+  if (!opt.keep.empty() && !keepsComp && (opt.keep != "cycles" || !keepsCycles)) {
+    reportUsage(opt.keep == "comp" ? "--keep comp needs --to canonical (a target that compensates "
+                                     "itself; --to " +
+                                         opt.to + " keeps G41/G42 as written)"
+                : opt.keep != "cycles"
+                    ? "--keep takes cycles or comp"
                     : fmt::format("--keep cycles needs a target with canned cycles ({}); {} has "
                                   "none",
                                   cycleTargets(), target ? target->name : "canonical motion"));
     return UsageError;
   }
+  ExpandOptions kept = opt;
+  kept.common.keepCompensation = keepsComp;
   Session s(opt.common);
   machine::Setup setup;
   if (int rc = openWithSetup(s, file, opt.setup, setup)) return rc;
@@ -118,7 +125,7 @@ int runExpand(const std::string& file, const ExpandOptions& opt) {
   copt.provenance = opt.provenance;
   copt.fileName = [&](FileId id) { return s.sources().name(id); };
   emit::CanonicalEmitter emitter(out.stream(), copt);
-  const bool ok = executeProgram(s, opt.common, setup, emitter, print.stream());
+  const bool ok = executeProgram(s, kept.common, setup, emitter, print.stream());
   s.flushDiagnostics();
   if (!ok) return ProgramErrors;
   return print.finish() && out.commit() ? Ok : UsageError;

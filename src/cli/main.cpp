@@ -100,7 +100,8 @@ int main(int argc, char** argv) {
                      "with --to nct: what to flatten (macros,subprograms; cycles stay cycles)");
   expand->add_option("--keep", expandOpt.keep,
                      "structure to keep where the target expresses it: cycles (--to nct; the "
-                     "default there). --to canonical expands every cycle");
+                     "default there; --to canonical expands every cycle), comp (--to canonical: "
+                     "G41.1/G42.1 for a controller that compensates itself)");
   addCommon(expand);
   addExecution(expand);
 

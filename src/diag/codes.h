@@ -68,6 +68,7 @@ inline constexpr const char* ChamferAndRounding = "2082"; // ,C and ,R in one bl
 inline constexpr const char* IllegalChamfer = "2085";     // no plane element before or after
 inline constexpr const char* ChamferTooBig = "GCX074";    // does not fit on the elements
 inline constexpr const char* AngleLine = "GCX075";        // ,A outside a one-coordinate G0/G1
+inline constexpr const char* CompOnlyCode = "GCX076";     // G38/G39 without G41/G42
 // --- gcx: execution
 inline constexpr const char* NotImplemented = "GCX030";
 inline constexpr const char* UnknownGCodeAtRun = "GCX031";

@@ -98,6 +98,8 @@ enum class GAction : unsigned char {
   StrokeLimitOff,
   DiameterMode, // G10.9: axis words 1 = diameter, 0 = radius programming
   Modeless,     // state the motion model does not depend on (polar interpolation off...)
+  CornerArc,    // radius compensation: an arc of the tool radius at the next outer corner
+  VectorHold,   // radius compensation: the block ends with the vector it starts with
 };
 
 struct GCodeSpec {

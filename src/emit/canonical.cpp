@@ -185,6 +185,16 @@ void CanonicalEmitter::event(const motion::Event& e) {
   case Kind::OverrideLock: // LinuxCNC: M49 disables the feed and speed overrides, M48 enables
     line(e.value != 0 ? "M49" : "M48", e);
     return;
+  case Kind::RadiusComp: // LinuxCNC compensates itself: G41.1/G42.1 take the tool diameter
+    if (e.value == 0) {
+      line("G40", e);
+      return;
+    }
+    plane_ = e.plane;
+    line(fmt::format("{} {} D{}", motion::planeCode(plane_), e.value > 0 ? "G41.1" : "G42.1",
+                     num(2 * e.startRadius)),
+         e);
+    return;
   case Kind::PlaneChange:
   case Kind::UnitsChange:
   case Kind::FeedModeChange:

@@ -170,7 +170,10 @@ bool CompensationStage::element(const motion::Event& e, motion::Sink& out) {
       join = comp::Join::Perpendicular;
     else if (a.d * d < 0) // G41 <-> G42 or the sign of D changes (nct.md §3.17.4)
       join = comp::Join::Direction, dSecond = d;
-    const auto c = comp::corner(a.path, path, a.d, dSecond, join, options_.outer, a.virtualDir);
+    const auto rule = cornerArc_ ? comp::OuterCorner::Arc : options_.outer;
+    auto c = comp::corner(a.path, path, a.d, dSecond, join, rule, a.virtualDir);
+    if (a.hold) // G38: the start vector again at the end (nct.md §3.17.5)
+      c = comp::CornerResult{{a.path.b + (a.start - a.path.a)}, false, false};
     if (c.noIntersection)
       return fail(diag::code::CompNoIntersection, a.e.from,
                   "no intersection point of the compensated paths at the end of this block "
@@ -184,8 +187,14 @@ bool CompensationStage::element(const motion::Event& e, motion::Sink& out) {
   }
   const bool startUp = !pending_ && ((startPending_ && blockIndex_ == startBlock_) || restart_);
   if (!toolKnown_) tool_ = e.start, toolExtra_ = e.extraStart, toolKnown_ = true;
-  pending_ = Element{e, path, d, startUp, startUp ? direction_ : std::nullopt};
-  startPending_ = restart_ = zeroMove_ = false;
+  pending_ = Element{e,
+                     path,
+                     d,
+                     startUp,
+                     startUp ? direction_ : std::nullopt,
+                     holdBlock_ == blockIndex_,
+                     planar(tool_)};
+  startPending_ = restart_ = zeroMove_ = cornerArc_ = false;
   waiting_ = 0;
   return true;
 }

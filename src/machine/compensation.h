@@ -39,6 +39,10 @@ public:
                const std::optional<comp::Vec2>& direction = std::nullopt);
   /// The block has in-plane axis words but no in-plane displacement (nct.md §3.17.1).
   void zeroPlaneMove() { zeroMove_ = true; }
+  /// G39: the next outer corner is passed on an arc of the radius about the corner point.
+  void cornerArc() { cornerArc_ = true; }
+  /// G38: this block's plane element ends with the vector it starts with.
+  void holdVector() { holdBlock_ = blockIndex_; }
   /// A look-ahead breaker (nct.md §3.17.7): the waiting element ends on its programmed point,
   /// this block's moves pass uncompensated, the vector is rebuilt by the next plane element.
   void breakLookAhead(motion::Sink& out);
@@ -52,9 +56,11 @@ private:
   struct Element {
     motion::Event e;
     comp::Path2 path;
-    double d = 0;                         // signed offset at its end (left positive)
-    bool startUp = false;                 // starts at the uncompensated point
-    std::optional<comp::Vec2> virtualDir; // the start-up block's I J K
+    double d = 0;                          // signed offset at its end (left positive)
+    bool startUp = false;                  // starts at the uncompensated point
+    std::optional<comp::Vec2> virtualDir;  // the start-up block's I J K
+    bool hold = false;                     // G38: ends with its start vector
+    comp::Vec2 start = comp::Vec2::Zero(); // its compensated start
   };
 
   bool inPlane(const motion::Event& e) const;
@@ -88,6 +94,8 @@ private:
   bool startPending_ = false, restart_ = false, cancelPending_ = false;
   int suspendedBlock_ = -1; // a breaker's block: its moves pass uncompensated
   bool zeroMove_ = false;
+  bool cornerArc_ = false; // G39 before the next corner
+  int holdBlock_ = -1;     // the G38 block
   bool displaced_ = false; // the tool stands off the programmed path after a cancel
   motion::Vec3 tool_ = motion::Vec3::Zero();
   motion::Extra toolExtra_ = motion::Extra::Zero();

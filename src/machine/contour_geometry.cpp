@@ -3,6 +3,7 @@
 // from the stage that inserts it (contour_corners.h).
 #include <cmath>
 #include <fmt/format.h>
+#include <utility>
 
 #include "diag/codes.h"
 #include "emit/number.h"
@@ -12,6 +13,11 @@
 namespace gcx::machine {
 
 bool Interpreter::contourGeometry(const BlockWords& w, Vec3& to) {
+  if (directionLine_ && !(w.angle && w.hasAxisWord()))
+    return fail(diag::code::NotImplemented, blockRange_,
+                "a line given by its direction alone must be followed by an over-determined line "
+                "(both coordinates and ,A); other intersection calculations are not implemented "
+                "yet (nct.md §4.3)");
   if (!w.angle && !w.chamfer && !w.rounding) return true;
   const motion::PlaneAxes ax = motion::axesOf(state_.plane);
   const bool first = axisGiven(w, ax.first), second = axisGiven(w, ax.second);
@@ -22,6 +28,38 @@ bool Interpreter::contourGeometry(const BlockWords& w, Vec3& to) {
       return fail(
           diag::code::AngleLine, w.angle->range,
           fmt::format("{} gives the direction of a G0 or G1 line (nct.md §4.2)", w.angle->address));
+    const bool compensating = state_.radiusComp != GAction::RadiusCompOff;
+    if (!first && !second && compensating && !directionLine_) {
+      // a line known by its direction only: it ends where the next, over-determined line
+      // meets it (nct.md §4.3 line-line, TV21); nothing moves yet
+      directionLine_ = DirectionLine{w.angle->number, from_, state_.motion, state_.feed};
+      to = program_;
+      return true;
+    }
+    if (first && second && compensating && directionLine_) {
+      // over-determined: its coordinates are absolute, the intersection ends the previous line
+      to[ax.first] = coordinate(ax.first, *(w.axis[ax.first] ? w.axis[ax.first] : w.uvw[ax.first]));
+      to[ax.second] =
+          coordinate(ax.second, *(w.axis[ax.second] ? w.axis[ax.second] : w.uvw[ax.second]));
+      const DirectionLine d = *std::exchange(directionLine_, std::nullopt);
+      const double a1 = d.degrees * M_PI / 180, a2 = w.angle->number * M_PI / 180;
+      const double den = std::sin(a2 - a1);
+      if (std::fabs(den) < 1e-12)
+        return fail(diag::code::CompNoIntersection, w.angle->range,
+                    "the two lines are parallel: no intersection point (nct.md §4.3)");
+      const double dx = to[ax.first] - program_[ax.first], dy = to[ax.second] - program_[ax.second];
+      const double s = (dx * std::sin(a2) - dy * std::cos(a2)) / den;
+      Vec3 meet = program_;
+      meet[ax.first] += s * std::cos(a1);
+      meet[ax.second] += s * std::sin(a1);
+      const motion::Provenance here = from_;
+      from_ = d.from;
+      emitLine(d.motion == GAction::Rapid ? motion::Kind::Rapid : motion::Kind::Feed,
+               toMachine(meet), extra_, d.feed);
+      from_ = here;
+      program_ = meet;
+      return true;
+    }
     if (first == second)
       return fail(diag::code::NotImplemented, w.angle->range,
                   fmt::format("{} with {} plane coordinates is an intersection calculation, which "

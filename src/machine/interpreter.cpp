@@ -311,7 +311,7 @@ bool Interpreter::executeBlock(const ir::Block& block) {
   const bool arcWithCentreOnly =
       (state_.motion == GAction::ArcCW || state_.motion == GAction::ArcCCW) &&
       (w.ijk[0] || w.ijk[1] || w.ijk[2] || (w.r && profile_.machine.strictArcRadius));
-  if (!consumed && (w.hasAxisWord() || arcWithCentreOnly))
+  if (!consumed && (w.hasAxisWord() || arcWithCentreOnly || w.angle)) // ,A alone: a direction
     if (!move(w)) return false;
   if (pendingDwell_) {
     emitDwell(*pendingDwell_);
@@ -451,6 +451,9 @@ bool Interpreter::applyModal(const BlockWords& w) {
     case GAction::RadiusCompRight:
       state_.radiusComp = g->action; // radiusCompensation() starts the stage
       break;
+    case GAction::CornerArc:
+    case GAction::VectorHold:
+      break; // radiusCompensation()
     case GAction::DrillCycle:
       state_.cycle = g->action; // drillBlock() stores the block's data and drills
       break;
@@ -1236,6 +1239,11 @@ void Interpreter::message(const std::string& text, const motion::Provenance& fro
 
 void Interpreter::finish() {
   if (ended_) return;
+  if (directionLine_) { // a line by ,A alone never met the line that ends it (nct.md §4.3)
+    fail(diag::code::NotImplemented, blockRange_,
+         "the program ends after a line given by its direction alone");
+    return;
+  }
   ended_ = true;
   motion::Event e;
   e.kind = Kind::End;

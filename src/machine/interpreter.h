@@ -109,6 +109,9 @@ public:
   /// For `--to nct` without cycle expansion: canned-cycle blocks pass through unexecuted; the
   /// programmed position follows the hole positions in the plane (not the drilling axis).
   void setDeferCycles(bool on) { deferCycles_ = on; }
+  /// For a target that compensates itself (expand --keep comp): G40/G41/G42 become RadiusComp
+  /// events with the side and radius, and the path stays the programmed one.
+  void setKeepCompensation(bool on) { keepCompensation_ = on; }
   /// The most moves a run may make (--max-moves): each rapid, feed and arc, and each turn of a
   /// multi-turn arc, counts one; past it execution stops with a located error.
   void setMaxMoves(std::uint64_t n) { maxMoves_ = n; }
@@ -322,6 +325,16 @@ private:
   std::optional<double> turningTaper_;     // and its R
   int lockedFrom_ = 0;                     // the group-15 code a tapping cycle's G63 replaced
   bool deferCycles_ = false;
+  bool keepCompensation_ = false;
+  struct DirectionLine { // a line by ,A alone, waiting for the line that ends it (§4.3)
+    double degrees;
+    motion::Provenance from;
+    GAction motion;
+    double feed;
+  };
+  std::optional<DirectionLine> directionLine_;
+  int keptSide_ = 0; // the side and radius of the last RadiusComp event
+  double keptRadius_ = 0;
   bool ended_ = false;
   bool speedProgrammed_ = false; // an S word was given (before it, the speed is unknown)
   bool stopped_ = false;         // a limit or a value out of range stopped the run inside a block

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "diag/codes.h"
+#include "emit/number.h"
 #include "machine/interpreter.h"
 #include "machine/settings.h"
 #include "motion/geometry.h"
@@ -29,7 +30,12 @@ bool Interpreter::compensationFailed(const CompensationFailure& f) {
 
 bool Interpreter::radiusCompensation(const BlockWords& w, const ModalState& before) {
   const bool on = state_.radiusComp != GAction::RadiusCompOff;
-  if (!on && !comp_.engaged()) return true;
+  for (GAction a : {GAction::CornerArc, GAction::VectorHold})
+    if (const ir::Word* g = w.findAction(a); g && (!on || keepCompensation_))
+      return fail(diag::code::CompOnlyCode, g->range,
+                  fmt::format("G{} acts only while radius compensation (G41/G42) is on",
+                              emit::formatNumber(g->number)));
+  if (!on && !comp_.engaged() && keptSide_ == 0) return true;
   if (!comp_.beginBlock(*sink_)) return compensationFailed(*comp_.failure());
   const motion::PlaneAxes ax = motion::axesOf(state_.plane);
   const bool arcMode = state_.motion == GAction::ArcCW || state_.motion == GAction::ArcCCW;
@@ -72,6 +78,20 @@ bool Interpreter::radiusCompensation(const BlockWords& w, const ModalState& befo
                        m(ax.first, ax.second) * m(ax.second, ax.first);
     if (det < 0) side = -side;
   }
+  if (keepCompensation_) { // the target compensates: tell it, keep the programmed path
+    if (side != keptSide_ || radius != keptRadius_) {
+      motion::Event e;
+      e.kind = motion::Kind::RadiusComp;
+      e.start = e.end = machine_;
+      e.extraStart = e.extraEnd = extra_;
+      e.value = side;
+      e.startRadius = radius;
+      e.plane = state_.plane;
+      emit(std::move(e));
+      keptSide_ = side, keptRadius_ = radius;
+    }
+    return true;
+  }
   // a start-up's or cancel's I J K: the direction of a virtual element (nct.md §3.17.2-3)
   std::optional<comp::Vec2> direction;
   if ((startWord || cancelWord) && !arcMode && (w.ijk[ax.first] || w.ijk[ax.second])) {
@@ -90,7 +110,22 @@ bool Interpreter::radiusCompensation(const BlockWords& w, const ModalState& befo
     breaks = breaks || (spec && std::ranges::find(rules.breakerMCodes, spec->action) !=
                                     rules.breakerMCodes.end());
   }
+  // a canned cycle's holes and passes are not compensated (cycles.md Q-20): a breaker too
+  breaks = breaks || (state_.cycle == GAction::DrillCycle && !deferCycles_) || pendingTurning_ ||
+           state_.motion == GAction::TurningCycle;
   if (breaks) comp_.breakLookAhead(*sink_);
+  // G39 corner arc, G38 vector hold (nct.md §3.17.5)
+  for (GAction a : {GAction::CornerArc, GAction::VectorHold}) {
+    const ir::Word* g = w.findAction(a);
+    if (!g) continue;
+    if (a == GAction::CornerArc && (w.hasAxisWord() || w.ijk[0] || w.ijk[1] || w.ijk[2]))
+      return fail(diag::code::NotImplemented, g->range,
+                  "G39 stands in a block of its own; its I J K end vector is not implemented yet");
+    if (a == GAction::CornerArc)
+      comp_.cornerArc();
+    else
+      comp_.holdVector();
+  }
   if (comp_.failure()) return compensationFailed(*comp_.failure());
   comp_.setMode(state_.plane, side, radius, direction);
   // in-plane words without in-plane displacement (nct.md §3.17.1, 000:7625-7641)

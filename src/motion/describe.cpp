@@ -47,6 +47,8 @@ const char* kindLabel(Kind k) {
     return "SpindleOrient";
   case Kind::OverrideLock:
     return "OverrideLock";
+  case Kind::RadiusComp:
+    return "RadiusComp";
   case Kind::ToolChange:
     return "ToolChange";
   case Kind::Coolant:
@@ -96,6 +98,10 @@ std::string describeEvent(const Event& e) {
     return fmt::format("SpindleOrient {}", e.value);
   case Kind::OverrideLock:
     return e.value != 0 ? "OverrideLock on" : "OverrideLock off";
+  case Kind::RadiusComp:
+    return e.value == 0
+               ? "RadiusComp off"
+               : fmt::format("RadiusComp {} r{}", e.value > 0 ? "left" : "right", e.startRadius);
   case Kind::ToolChange:
     return fmt::format("ToolChange T{}", e.value);
   case Kind::Coolant:

@@ -47,6 +47,8 @@ enum class Kind {
   FeedModeChange, // G94/G95 (value 94 or 95)
   OverrideLock,   // value 1: feed and speed overrides fixed at 100 %, feed hold off (NCT G63,
                   // a tapping cycle's NOOVR-ON); value 0: released again
+  RadiusComp,     // cutter radius compensation kept for the target (expand --keep comp): value
+                  // +1 left (G41), -1 right (G42), 0 off (G40); startRadius the tool radius
 };
 
 struct Event {

@@ -76,6 +76,7 @@ void StatsCollector::event(const Event& e) {
     break;
   case Kind::SpindleOrient:
   case Kind::OverrideLock:
+  case Kind::RadiusComp:
   case Kind::Coolant:
   case Kind::Stop:
   case Kind::End:

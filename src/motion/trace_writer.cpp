@@ -26,6 +26,8 @@ const char* kindName(Kind k) {
     return "spindle_orient";
   case Kind::OverrideLock:
     return "override_lock";
+  case Kind::RadiusComp:
+    return "radius_comp";
   case Kind::ToolChange:
     return "tool_change";
   case Kind::Coolant:
@@ -177,6 +179,12 @@ std::string TraceWriter::line(const Event& e) {
   case Kind::OverrideLock:
     key(s, "value");
     appendDecimal(s, e.value);
+    break;
+  case Kind::RadiusComp:
+    key(s, "value");
+    appendDecimal(s, e.value);
+    key(s, "radius");
+    appendDecimal(s, e.startRadius);
     break;
   case Kind::ToolChange:
     key(s, "tool");

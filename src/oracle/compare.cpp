@@ -186,6 +186,7 @@ std::string mismatch(const Event& a, const Event& b, const CompareOptions& o) {
   case Kind::Coolant:
   case Kind::SpindleOrient:
   case Kind::OverrideLock:
+  case Kind::RadiusComp:
     if (std::abs(a.value - b.value) > 1e-6) return "values differ";
     return {};
   case Kind::Stop:

@@ -5,8 +5,11 @@
 //    at the block comp/expected.txt names, for the documented reason.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <fmt/format.h>
 #include <map>
 #include <sstream>
+#include <sys/wait.h>
 
 #include "differential/oracle_run.h"
 #include "emit/canonical.h"
@@ -104,6 +107,33 @@ TEST_P(CompDifferential, Rs274CompensatingTheProgramAgreesOrPartsWhereDocumented
       << "comp/expected.txt has no line for " << GetParam() << " (" << verdict << ")\n"
       << c.report;
   EXPECT_EQ(verdict, want.at(GetParam())) << c.report;
+}
+
+// expand --keep comp: canonical motion keeps the compensation for LinuxCNC (G41.1/G42.1 with
+// the diameter), so rs274 compensating gcx's output moves exactly as compensating the program.
+TEST_P(CompDifferential, KeptCompensationIsLinuxCncsOwn) {
+  if (!oracle::rs274Available()) GTEST_SKIP() << "rs274 (linuxcnc-uspace) is not installed";
+  const std::string out =
+      (fs::temp_directory_path() / ("gcx_keep_" + GetParam() + ".ngc")).string();
+  const std::string cmd = fmt::format(
+      "{} expand {} --to canonical --keep comp --setup {} -o {} 2>/dev/null", GCX_BINARY,
+      (contours() / (GetParam() + ".nct")).string(), (contours() / "setup.json").string(), out);
+  ASSERT_EQ(WEXITSTATUS(std::system(cmd.c_str())), 0) << cmd;
+  const std::string kept = readFile(out);
+  fs::remove(out);
+  EXPECT_TRUE(kept.find(" G41.1 D6\n") != std::string::npos ||
+              kept.find(" G42.1 D6\n") != std::string::npos)
+      << kept;
+  EXPECT_NE(kept.find("\nG40\n"), std::string::npos) << kept;
+  Runs r = runGcx(GetParam());
+  std::string failure, theirFailure;
+  const auto fromKept = runOracle(kept, r.options, failure);
+  const auto fromProgram =
+      runOracle(readFile(contours() / (GetParam() + ".nct")), r.options, theirFailure);
+  EXPECT_EQ(failure.empty(), theirFailure.empty()) << failure << theirFailure;
+  if (!failure.empty()) return; // rs274 rejects both (G19)
+  const oracle::CompareResult c = oracle::compareEvents(fromKept, fromProgram);
+  EXPECT_TRUE(c.equivalent) << c.report << "\n--- kept:\n" << kept;
 }
 
 INSTANTIATE_TEST_SUITE_P(Contours, CompDifferential, testing::ValuesIn(names()),

@@ -47,6 +47,20 @@ TEST(CompNctSpec_4_1, ChainedChamferAndRounding) {
                "CCW 29.9216,78.75,0 C20,40 r40 θ61.161", "L 20,90,0 F100", "L 20,110,0 F100"}));
 }
 
+// nct.md §4.3 line-line (000:9045-9060): a line by its direction alone ends where the next,
+// over-determined line (absolute X Y and ,A) meets it; D0 keeps the path uncompensated.
+TEST(CompNctSpec_7, TV21_IntersectionLineLine) {
+  ProgramRun r = runNct("G17 G90 G41 D0\nG0 X90 Y10\nN10 G1 ,A150 F100\nN20 X10 Y20 ,A225\n"
+                        "G0 X0 Y20\n");
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(compMotion(r.motion()),
+            (V{"R 90,10,0", "L 32.9423,42.9423,0 F100", "L 10,20,0 F100", "R 0,20,0"}));
+  ASSERT_GE(r.events.size(), 3u);
+  EXPECT_EQ(r.events[1].from.at.line, 3u); // the intersection ends N10's own move
+  ProgramRun square = runNct("G17 G90 G41 D0\nG1 ,A0 F100\nX10 Y10 ,A90\n");
+  EXPECT_EQ(compMotion(square.motion()), (V{"L 10,0,0 F100", "L 10,10,0 F100"})) << square.rendered;
+}
+
 TEST(CompNctSpec_4_1, ChamferAndRoundingInOneBlock2082) {
   ProgramRun r = runNct("G17 G1 X30 ,C5 ,R5 F100\nY30\n");
   EXPECT_EQ(r.errors, V{"1:16 2082"}) << r.rendered;

@@ -128,7 +128,7 @@ void checkPolygon(const Contour& c, bool inside, double r) {
     std::vector<P2> ends;
     for (auto it = main; it != run.events.end() && it->from.at.line == first + k; ++it)
       ends.push_back(xy(it->end));
-    if (tA.dot(tB) >= 1e-9) {
+    if (tA.dot(tB) >= -1e-9) { // turn of 90° or less: obtuse, alpha >= 90°
       RC_ASSERT(ends.size() == 1u);
       RC_ASSERT(std::fabs(side(b, e[k + 1].second, ends[0]) - want) < 1e-6);
     } else {

@@ -35,6 +35,41 @@ TEST(CompNctSpec_3_15, MirrorSwapsTheSide) {
                "L 0,-20,0 F100"}));
 }
 
+// cycles.md Q-20: a drilling cycle's holes are not compensated; the cycle breaks the look-ahead
+// like G43 (nct.md §3.17.7): the waiting element ends on its programmed point.
+TEST(CompNctSpec_3_17_7, DrillingCycleBreaksTheLookAhead) {
+  ProgramRun r = runNct("G17 G90 G0 X0 Y0 Z10\nG41 G1 X10 D1 F100\nG81 X20 Y20 Z-5 R2\nX30\n"
+                        "G80\nG40 G1 X0 Y0\n",
+                        compSetup(1));
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(compMotion(r.motion()), (V{"R 0,0,10", "L 10,0,10 F100", "R 20,20,10", "R 20,20,2",
+                                       "L 20,20,-5 F100", "R 20,20,10", "R 30,20,10", "R 30,20,2",
+                                       "L 30,20,-5 F100", "R 30,20,10", "L 0,0,10 F100"}));
+}
+
+// nct.md §3.17.5 (000:8139-8211): G39 passes the next outer corner on an arc of the radius about
+// the corner point, clockwise under G41.
+TEST(CompNctSpec_3_17_5, G39CornerArc) {
+  ProgramRun r =
+      runNct("G17 G90 G0 X0 Y-10\nG41 G1 X0 Y0 D1 F100\nY30\nG39\nX30\nG40 X40\n", compSetup(1));
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(compMotion(r.motion()),
+            (V{"R 0,-10,0", "L -1,0,0 F100", "L -1,30,0 F100", "CW 0,31,0 C0,30 r1 θ90",
+               "L 30,31,0 F100", "L 40,30,0 F100"}));
+  EXPECT_EQ(runNct("G17 G39\n", compSetup(1)).errors, V{"1:5 GCX076"});
+}
+
+// nct.md §3.17.5 (000:8105-8137): G38 ends its block with the vector it starts with, whatever
+// the next corner; the next element starts there.
+TEST(CompNctSpec_3_17_5, G38VectorHold) {
+  ProgramRun r = runNct("G17 G90 G0 X0 Y-10\nG41 G1 X0 Y0 D1 F100\nY30\nG38 X30\nY0\n"
+                        "G40 X30 Y-10\n",
+                        compSetup(1));
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(compMotion(r.motion()), (V{"R 0,-10,0", "L -1,0,0 F100", "L -1,31,0 F100",
+                                       "L 29,31,0 F100", "L 31,0,0 F100", "L 30,-10,0 F100"}));
+}
+
 // nct.md §3.17.1: a block out of the plane between two plane elements keeps the corner; it runs
 // at the corner point. An obtuse outer cancel goes through the offsets' intersection.
 TEST(CompNctSpec_3_17_1, OutOfPlaneBlockInsideTheLookAhead) {

@@ -68,6 +68,9 @@ std::string describe(const motion::Event& e) {
     return "EV M19";
   case motion::Kind::OverrideLock:
     return e.value != 0 ? "EV G63" : "EV G64";
+  case motion::Kind::RadiusComp:
+    if (e.value == 0) return "EV G40";
+    return std::string(e.value > 0 ? "EV G41 r" : "EV G42 r").append(n4(e.startRadius));
   case motion::Kind::ToolChange:
     return "EV T" + n4(e.value) + " M6";
   case motion::Kind::Coolant:
