@@ -61,7 +61,7 @@ std::vector<GCodeSpec> gcodes() {
       {30, 1, "circular interpolation CCW", A::ArcCCW},
       {40, 0, "dwell (E, tenths of a second)", A::Dwell},
       {90, 0, "decelerate at the end of the block", A::ExactStopOnce},
-      {100, 0, "helical interpolation (with G02/G03)"},
+      {100, 0, "helical interpolation (with G02/G03)", A::HelicalQualifier},
       {140, 2, "corner transition by arcs", A::Modeless},
       {150, 2, "corner transition by straight segments", A::Modeless},
       {170, 3, "plane 1-2 (XY)", A::PlaneXY},

@@ -93,8 +93,9 @@ enum class GAction : unsigned char {
   SurfaceSpeedOff,
   StrokeLimitOn,
   StrokeLimitOff,
-  DiameterMode, // G10.9: axis words 1 = diameter, 0 = radius programming
-  Modeless,     // state the motion model does not depend on (polar interpolation off...)
+  DiameterMode,     // G10.9: axis words 1 = diameter, 0 = radius programming
+  Modeless,         // state the motion model does not depend on (polar interpolation off...)
+  HelicalQualifier, // with G02/G03: a helix by pitch (FMS-3000 G10, the normal axis's I/J/K)
 };
 
 struct GCodeSpec {

@@ -1,5 +1,6 @@
 #include "machine/interpreter.h"
 #include "machine/cycle_state.h"
+#include "machine/helix.h"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -426,7 +427,8 @@ bool Interpreter::applyModal(const BlockWords& w) {
     case GAction::ReferenceReturn:
     case GAction::OtherReferenceReturn:
     case GAction::DiameterMode:
-      break; // applyNonMotion
+    case GAction::HelicalQualifier: // arc()
+      break;                        // applyNonMotion
     case GAction::DrillCycle:
       state_.cycle = g->action; // drillBlock() stores the block's data and drills
       break;
@@ -936,7 +938,11 @@ bool Interpreter::arc(const BlockWords& w, const Vec3& end, const motion::Extra&
   const motion::PlaneAxes ax = motion::axesOf(state_.plane);
   const bool cw = state_.motion == GAction::ArcCW;
   const SourceRange& at = blockRange_;
-  if (w.ijk[ax.normal])
+  const ir::Word* helixPitch = w.has(GAction::HelicalQualifier) ? w.ijk[ax.normal] : nullptr;
+  if (w.has(GAction::HelicalQualifier) && !helixPitch)
+    return fail(diag::code::ArcDefinition, w.findAction(GAction::HelicalQualifier)->range,
+                fmt::format("a helix needs its pitch {}", "IJK"[ax.normal]));
+  if (w.ijk[ax.normal] && !helixPitch)
     return fail(
         diag::code::ArcDefinition, w.ijk[ax.normal]->range,
         fmt::format("{} is outside the selected plane (nct.md §3.5)", w.ijk[ax.normal]->address));
@@ -1010,6 +1016,17 @@ bool Interpreter::arc(const BlockWords& w, const Vec3& end, const motion::Extra&
   Vec3 centre = start;
   centre[ax.first] = c1;
   centre[ax.second] = c2;
+  if (helixPitch) { // FMS-3000 G10: the turns follow from the travel and the pitch (§3.6)
+    const double travel = end[ax.normal] - start[ax.normal];
+    if (std::fabs(travel) < 1e-9)
+      return fail(diag::code::ArcDefinition, at,
+                  "a helix needs a move of the axis outside the arc's plane");
+    const auto plan =
+        planHelix(s1, s2, e1, e2, c1, c2, cw, travel, mm(helixPitch->number), radiusTolerance_);
+    if (const std::string* why = std::get_if<std::string>(&plan))
+      return fail(diag::code::ArcDefinition, helixPitch->range, *why);
+    turns = std::get<HelixPlan>(plan).fullTurns + 1;
+  }
   return arcTo(end, centre, cw, turns, extraEnd, state_.feed);
 }
 

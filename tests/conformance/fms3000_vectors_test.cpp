@@ -86,6 +86,27 @@ TEST(Fms3000Vectors_8, T7_DwellInTenthsOfASecondAfterTheMotion) {
   EXPECT_EQ(run("G1X10F100G04E25 · G04E5 · M30"), (V{"L 10,0,0 F100", "DW 2.5s", "DW 0.5s"}));
 }
 
+TEST(Fms3000Vectors_8, T8_HelixByPitchQuarterTurn) {
+  // the manual's example with Y-50 (E17 corrected): 40 mm at 160 per turn is a quarter turn
+  EXPECT_EQ(run("G91G2G10X-50Y-50I-50Z40K160F100 · M30"), V{"CW -50,-50,40 C-50,0 r50 θ90"});
+}
+
+TEST(Fms3000Vectors_8, T9_HelixOfThreeTurnsEndingAboveItsStart) {
+  EXPECT_EQ(run("G0X10 · G3G10X10Y0I-10Z-6K-2F100 · M30"),
+            (V{"R 10,0,0", "CCW 10,0,-6 C0,0 r10 θ1080"}));
+}
+
+TEST(Fms3000Vectors_8, T10_TheManualsLiteralHelixIsInconsistent) {
+  // Y50: 270 degrees in the plane against a quarter turn of travel
+  EXPECT_EQ(errorsOf("G91G2G10X-50Y50I-50Z40K160F100"), V{"main.fms:1:23 2015"});
+}
+
+TEST(Fms3000Vectors_8, HelixWithoutPitchOrTravel) {
+  EXPECT_EQ(errorsOf("G91G2G10X-50Y-50I-50Z40F100"), V{"main.fms:1:6 2015"});       // 001:3840
+  EXPECT_EQ(errorsOf("G91G2G10X-50Y-50I-50K160F100"), V{"main.fms:1:1 2015"});      // 001:3844
+  EXPECT_EQ(errorsOf("G91G2G10X-50Y-50I-50Z-40K160F100"), V{"main.fms:1:25 2015"}); // sign
+}
+
 TEST(Fms3000Vectors_8, T16_G55G53ModalG54AndG92) {
   machine::Setup s = s0();
   s.workOffsets["G55"] = {500, 200, 100};
