@@ -427,8 +427,11 @@ bool Interpreter::applyModal(const BlockWords& w) {
     case GAction::ReferenceReturn:
     case GAction::OtherReferenceReturn:
     case GAction::DiameterMode:
-    case GAction::HelicalQualifier: // arc()
-      break;                        // applyNonMotion
+    case GAction::HelicalQualifier:    // arc()
+    case GAction::OneSidedPositioning: // move()
+    case GAction::ImplicitPlus:
+    case GAction::ImplicitMinus:
+      break; // applyNonMotion
     case GAction::DrillCycle:
       state_.cycle = g->action; // drillBlock() stores the block's data and drills
       break;
@@ -906,6 +909,9 @@ bool Interpreter::move(const BlockWords& w) {
             fmt::format("{} belongs to an arc: it is an error in a G00/G01 block", c->address));
   const Vec3 to = target(w, true);
   const motion::Extra extraTo = extraTarget(w);
+  if (w.has(GAction::OneSidedPositioning)) return oneSidedRapid(w, to, extraTo);
+  if (w.has(GAction::ImplicitPlus) || w.has(GAction::ImplicitMinus))
+    return implicitCoordinate(w, to, extraTo);
   switch (state_.motion) {
   case GAction::Rapid:
     emitLine(Kind::Rapid, toMachine(to), extraTo);
@@ -931,6 +937,69 @@ bool Interpreter::move(const BlockWords& w) {
   default:
     return fail(diag::code::NotImplemented, blockRange_, "motion mode not implemented yet");
   }
+}
+
+// A rapid whose programmed axes end moving in the approach direction: an axis that would
+// arrive from the other side, or not move at all, first goes past its target by the overshoot
+// (FMS-3000 G60, fms3000.md §3.3).
+bool Interpreter::oneSidedRapid(const BlockWords& w, const Vec3& to, const motion::Extra& extraTo) {
+  const double overshoot = profile_.machine.oneSidedOvershoot;
+  const double side = overshoot < 0 ? -1.0 : 1.0;
+  Vec3 via = to;
+  bool detour = false;
+  for (int a = 0; a < 3; ++a) {
+    if (!axisGiven(w, a) || (to[a] - program_[a]) * side > 1e-9) continue;
+    via[a] = to[a] - overshoot;
+    detour = true;
+  }
+  if (detour) {
+    emitLine(Kind::Rapid, toMachine(via));
+    program_ = via;
+  }
+  emitLine(Kind::Rapid, toMachine(to), extraTo);
+  program_ = to;
+  return true;
+}
+
+// One axis of the plane programmed, the other moving by the same magnitude, + or - (FMS-3000
+// G47/G48, fms3000.md §3.7): a 45-degree line, or on an arc a quarter circle (the short arc of
+// radius |travel|).
+bool Interpreter::implicitCoordinate(const BlockWords& w, Vec3 to, const motion::Extra& extraTo) {
+  const motion::PlaneAxes ax = motion::axesOf(state_.plane);
+  const ir::Word* code = w.findAction(GAction::ImplicitPlus);
+  const double sign = code ? 1.0 : -1.0;
+  if (!code) code = w.findAction(GAction::ImplicitMinus);
+  const bool first = axisGiven(w, ax.first), second = axisGiven(w, ax.second);
+  if (first == second)
+    return fail(diag::code::ArcDefinition, code->range,
+                fmt::format("{} takes exactly one axis of the plane", gName(*code)));
+  const int p = first ? ax.first : ax.second, q = first ? ax.second : ax.first;
+  const double travel = std::fabs(to[p] - program_[p]);
+  if (travel < 1e-9)
+    return fail(diag::code::ArcDefinition, code->range,
+                fmt::format("{} without a move", gName(*code)));
+  to[q] = program_[q] + sign * travel;
+  if (state_.motion == GAction::Rapid || state_.motion == GAction::Linear) {
+    if (state_.motion == GAction::Linear && state_.feed <= 0)
+      return fail(diag::code::MissingData, blockRange_, "linear move without a feed rate F");
+    emitLine(state_.motion == GAction::Rapid ? Kind::Rapid : Kind::Feed, toMachine(to), extraTo);
+    program_ = to;
+    return true;
+  }
+  if (state_.motion != GAction::ArcCW && state_.motion != GAction::ArcCCW)
+    return fail(diag::code::NotImplemented, code->range,
+                fmt::format("{} in this motion mode is not implemented", gName(*code)));
+  if (state_.feed <= 0)
+    return fail(diag::code::MissingData, blockRange_, "arc without a feed rate F");
+  const bool cw = state_.motion == GAction::ArcCW;
+  const double s1 = program_[ax.first], s2 = program_[ax.second];
+  const double d1 = to[ax.first] - s1, d2 = to[ax.second] - s2, chord = std::hypot(d1, d2);
+  const double h = std::sqrt(std::max(0.0, travel * travel - chord * chord / 4));
+  const double side = cw ? -1.0 : 1.0; // the short arc's centre: right of the chord for G2
+  Vec3 centre = program_;
+  centre[ax.first] = s1 + d1 / 2 - side * h * d2 / chord;
+  centre[ax.second] = s2 + d2 / 2 + side * h * d1 / chord;
+  return arcTo(to, centre, cw, 1, extraTo, state_.feed);
 }
 
 bool Interpreter::arc(const BlockWords& w, const Vec3& end, const motion::Extra& extraEnd,

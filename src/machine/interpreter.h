@@ -224,6 +224,8 @@ private:
   bool setCoordinates(const BlockWords& w);
   bool localCoordinates(const BlockWords& w);
   bool dataInput(const BlockWords& w, const ir::Block& b);
+  bool oneSidedRapid(const BlockWords& w, const Vec3& to, const motion::Extra& extraTo);
+  bool implicitCoordinate(const BlockWords& w, Vec3 to, const motion::Extra& extraTo);
   bool directReferenceReturn(const BlockWords& w, int point);
   bool referenceReturn(const BlockWords& w, int point);
   bool machineMove(const BlockWords& w);

@@ -107,6 +107,20 @@ TEST(Fms3000Vectors_8, HelixWithoutPitchOrTravel) {
   EXPECT_EQ(errorsOf("G91G2G10X-50Y-50I-50Z-40K160F100"), V{"main.fms:1:25 2015"}); // sign
 }
 
+TEST(Fms3000Vectors_8, T11_ImplicitCoordinateLinesAndQuarterCircles) {
+  EXPECT_EQ(run("G1G91X10G47F100 · G1G91X10G48 · G2G91X-10G48 · G2G91Y10G48 · M30"),
+            (V{"L 10,10,0 F100", "L 20,0,0 F100", "CW 10,-10,0 C10,0 r10 θ90",
+               "CW 0,0,0 C10,0 r10 θ90"}));
+}
+
+TEST(Fms3000Vectors_8, T11_TheManualsEquivalentForms) {
+  // 001:1470-1508: G1 X10 G48 = G1 Y-10 G47; G2 X-10 G47 = G2 Y10 G48
+  EXPECT_EQ(run("G1G91X10G48F100 · M30"), run("G1G91Y-10G47F100 · M30"));
+  EXPECT_EQ(run("G2G91X-10G47F100 · M30"), V{"CW -10,10,0 C0,10 r10 θ90"});
+  EXPECT_EQ(run("G2G91Y10G48F100 · M30"), V{"CW -10,10,0 C0,10 r10 θ90"});
+  EXPECT_EQ(errorsOf("G1G91X10Y5G47F100"), V{"main.fms:1:11 2015"});
+}
+
 TEST(Fms3000Vectors_8, T16_G55G53ModalG54AndG92) {
   machine::Setup s = s0();
   s.workOffsets["G55"] = {500, 200, 100};
@@ -127,6 +141,17 @@ TEST(Fms3000Vectors_8, T17_LengthCompensationAndFixedPoints) {
   s.tools[1].length = 50;
   EXPECT_EQ(run("G0X30Y40Z100 · G43H1 · G0Z10 · G44H1Z10 · G49Z10 · G28X5Y5 · G30Z0 · M30", s),
             (V{"R 30,40,100", "R 30,40,60", "R 30,40,-40", "R 30,40,10", "R 0,0,10", "R 0,0,300"}));
+}
+
+TEST(Fms3000Vectors_8, T18_OneSidedPositioningApproachesFromPlus) {
+  EXPECT_EQ(run("G0X10 · G60X5 · G60X8 · G91G60X0 · M30"),
+            (V{"R 10,0,0", "R 4,0,0", "R 5,0,0", "R 8,0,0", "R 7,0,0", "R 8,0,0"}));
+}
+
+TEST(Fms3000Vectors_8, T18_G60IsARapidForOneBlockPerAxis) {
+  // under modal G1: X arrives from -, Y from +; the next block feeds again
+  EXPECT_EQ(run("G1X10F100 · G60X5Y3 · X6 · M30"),
+            (V{"L 10,0,0 F100", "R 4,3,0", "R 5,3,0", "L 6,3,0 F100"}));
 }
 
 TEST(Fms3000Vectors_8, T19_MirrorAboutAPointSwapsTheArcDirection) {
