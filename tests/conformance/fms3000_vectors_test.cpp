@@ -177,6 +177,27 @@ TEST(Fms3000Vectors_8, T21_ScaleFactorsPerAxisAboutTheWorkOrigin) {
             (V{"L 20,10,0 F100", "L 10,5,0 F100"}));
 }
 
+TEST(Fms3000Vectors_8, T23_RepeatedFragmentThenACall) {
+  // L counts the runs of the fragment (§10 Q2); the G25 block itself runs once
+  const MacroRun r = runFms({{"main.fms", "G91G25L3\r\nG1X10F100\r\nM25\r\nG90X0P19\r\nM30\r\n"},
+                             {"19.fms", "G91G1Y5F100\r\nM99\r\n"}},
+                            s0());
+  ASSERT_EQ(r.errors, V{}) << r.rendered;
+  EXPECT_EQ(r.motion(), (V{"L 10,0,0 F100", "L 20,0,0 F100", "L 30,0,0 F100", "L 0,0,0 F100",
+                           "L 0,5,0 F100", "END"}));
+}
+
+TEST(Fms3000Vectors_8, T23_RepeatsNestAndTheM25BlockRunsEveryTime) {
+  EXPECT_EQ(run("G91G1F100 · G25L2 · X1 · G25L2 · Y1 · Z1M25 · X1M25 · M30"),
+            (V{"L 1,0,0 F100", "L 1,1,0 F100", "L 1,1,1 F100", "L 1,2,1 F100", "L 1,2,2 F100",
+               "L 2,2,2 F100", "L 3,2,2 F100", "L 3,3,2 F100", "L 3,3,3 F100", "L 3,4,3 F100",
+               "L 3,4,4 F100", "L 4,4,4 F100"}));
+}
+
+TEST(Fms3000Vectors_8, T23_M25WithoutG25) {
+  EXPECT_EQ(errorsOf("G1X1F100 · M25 · M30"), V{"main.fms:2:1 2125"});
+}
+
 TEST(Fms3000Vectors_8, T24_P19AndP019AreDifferentPrograms) {
   const MacroRun r = runFms({{"main.fms", "P19\r\nP019\r\nM30\r\n"},
                              {"19.fms", "G91G1X1F100\r\nM99\r\n"},
