@@ -99,6 +99,8 @@ enum class GAction : unsigned char {
   OneSidedPositioning, // a rapid whose final approach always comes from one side (FMS G60)
   ImplicitPlus,        // the other plane axis moves by +|the programmed one's travel| (FMS G47)
   ImplicitMinus,       // ... by -|travel| (FMS G48); on an arc, a quarter circle of that radius
+  LevelDrillCycle,     // a drilling cycle by U/Z/I levels whose parameters follow its code (FMS
+                       // G81-G88); arg = the cycle number (cycles/level_drilling.h)
 };
 
 struct GCodeSpec {

@@ -252,6 +252,11 @@ bool Interpreter::executeBlock(const ir::Block& block) {
   if (!block.stmts.empty())
     return fail(diag::code::NotImplemented, block.stmts.front().range,
                 "macro statements need the macro expansion pass, which is not implemented yet");
+  for (const ir::Word& g : block.words) // FMS-3000 G81-G88: the words after the code are its own
+    if (g.is('G'))
+      if (const GCodeSpec* spec = profile_.gcode(g.number);
+          spec && spec->action == GAction::LevelDrillCycle)
+        return levelCycleBlock(block, g, *spec);
   BlockWords w;
   if (const ir::Word* bad = sortWords(block, profile_, w))
     return fail(diag::code::ExpressionNotExpanded, bad->range,

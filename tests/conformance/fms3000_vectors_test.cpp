@@ -121,6 +121,56 @@ TEST(Fms3000Vectors_8, T11_TheManualsEquivalentForms) {
   EXPECT_EQ(errorsOf("G1G91X10Y5G47F100"), V{"main.fms:1:11 2015"});
 }
 
+TEST(Fms3000Vectors_8, T12_FourHolesWithRememberedParameters) {
+  // E32: the words before G81 run first; Z and F are remembered from N2
+  EXPECT_EQ(run("N1 G54 G0 G90 X10 Z10 · N2 G81 U0.5 Z-15.5 F100 · N3 X30 G81 U-9.5 I-4. · "
+                "N4 X45 G81 U-4.5 I0.5 · N5 X65 G81 U0.5 Z-10 I10 · N6 G80 · M30"),
+            (V{"R 10,0,10", "R 10,0,0.5", "L 10,0,-15.5 F100", "R 10,0,0.5", "R 30,0,0.5",
+               "R 30,0,-9.5", "L 30,0,-15.5 F100", "R 30,0,-9.5", "R 30,0,-4", "R 45,0,-4",
+               "R 45,0,-4.5", "L 45,0,-15.5 F100", "R 45,0,-4.5", "R 45,0,0.5", "R 65,0,0.5",
+               "L 65,0,-10 F100", "R 65,0,0.5", "R 65,0,10"}));
+}
+
+TEST(Fms3000Vectors_8, T14_DeepDrillingAndTapping) {
+  EXPECT_EQ(
+      run("G0Z10 · M3S500 · G83U2Z-10V4W1F100 · G80 · G84U5Z-20F300E5 · G80 · M30"),
+      (V{"R 0,0,10", "EV S500 M3", "R 0,0,2", "L 0,0,-2 F100", "R 0,0,2", "R 0,0,-1",
+         "L 0,0,-6 F100", "R 0,0,2", "R 0,0,-5", "L 0,0,-10 F100", "R 0,0,2", "R 0,0,5",
+         "L 0,0,-20 F300", "EV S500 M4", "DW 0.5s", "L 0,0,5 F300", "DW 0.5s", "EV S500 M3"}));
+}
+
+TEST(Fms3000Vectors_8, T15_TheCycleAxisFollowsThePlane) {
+  EXPECT_EQ(run("G19G0X50Y10Z10 · G81U5Z-10F100 · M30"),
+            (V{"R 50,10,10", "R 5,10,10", "L -10,10,10 F100", "R 5,10,10"}));
+}
+
+// the worked examples of §5.2 (start X0 Y0 Z10, G17 G90)
+TEST(Fms3000Cycles_5_2, WorkedExamples) {
+  const std::string start = "G0Z10 · ";
+  EXPECT_EQ(run(start + "G81 U2 Z-10 F100 E5 · M30"),
+            (V{"R 0,0,10", "R 0,0,2", "L 0,0,-10 F100", "DW 0.5s", "R 0,0,2"}));
+  EXPECT_EQ(run(start + "G82 U2 Z-10 F100 H50 I5 · M30"),
+            (V{"R 0,0,10", "R 0,0,2", "L 0,0,-10 F100", "L 0,0,2 F50", "R 0,0,5"}));
+  EXPECT_EQ(run(start + "M3 S100 · G85 U2 Z-10 F100 · M30"),
+            (V{"R 0,0,10", "EV S100 M3", "R 0,0,2", "L 0,0,-10 F100", "EV S100 M5", "R 0,0,2",
+               "EV S100 M3"}));
+  EXPECT_EQ(run(start + "G86 U2 Z-10 V4 W1 F100 · M30"),
+            (V{"R 0,0,10", "R 0,0,2", "L 0,0,-2 F100", "R 0,0,-1", "L 0,0,-6 F100", "R 0,0,-5",
+               "L 0,0,-10 F100", "R 0,0,2"}));
+  EXPECT_EQ(run(start + "G87 U2 Z-10 V4 W5 F100 · M30"),
+            (V{"R 0,0,10", "R 0,0,2", "L 0,0,-2 F100", "DW 0.5s", "L 0,0,-6 F100", "DW 0.5s",
+               "L 0,0,-10 F100", "R 0,0,2"}));
+  EXPECT_EQ(run(start + "G91 G81 U-8 Z-12 I20 F100 · M30"),
+            (V{"R 0,0,10", "R 0,0,2", "L 0,0,-10 F100", "R 0,0,2", "R 0,0,10"}));
+}
+
+TEST(Fms3000Cycles_5_1, MandatoryAndExtraParametersAndG80ForgetsThem) {
+  EXPECT_EQ(errorsOf("G81 U2 F100"), V{"main.fms:1:1 2004"});        // no Z
+  EXPECT_EQ(errorsOf("G81 U2 Z-5 R1 F100"), V{"main.fms:1:1 2004"}); // R is Fanuc's
+  EXPECT_EQ(errorsOf("G81 U2 Z-5 F100 · G80 · G81 U1"), V{"main.fms:3:1 2004"});
+  EXPECT_EQ(errorsOf("G81 U2 Z-5 F100 · G82 U1"), V{"main.fms:2:1 2004"}); // another cycle
+}
+
 TEST(Fms3000Vectors_8, T16_G55G53ModalG54AndG92) {
   machine::Setup s = s0();
   s.workOffsets["G55"] = {500, 200, 100};
