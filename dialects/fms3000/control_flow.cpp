@@ -25,6 +25,14 @@ RemapTable remapTable() {
   t.rows.push_back(p);
   t.rows.push_back(row("M", 99, FlowAction::Return));
   t.rows.push_back(row("M", 98, FlowAction::EndProgram));
+  // G25 L<n> ... M25: the fragment runs n times (001:358-375; L = runs, §10 Q2)
+  Remap g25 = row("G", 25, FlowAction::RepeatStart);
+  g25.repeatWord = 'L';
+  g25.spec = "fms3000.md §6.2";
+  t.rows.push_back(g25);
+  Remap m25 = row("M", 25, FlowAction::RepeatEnd);
+  m25.spec = "fms3000.md §6.2";
+  t.rows.push_back(m25);
   Remap g = row("G", std::nullopt, FlowAction::CallMacro);
   g.program = ProgramSource::CodeDigits;
   g.namePrefix = "G";
@@ -41,7 +49,7 @@ const ControlFlow& controlFlow() {
   static const ControlFlow flow = [] {
     ControlFlow f;
     f.remaps = remapTable();
-    f.expansionMarkers = {"P", "M98", "M99", "GG"};
+    f.expansionMarkers = {"P", "M98", "M99", "GG", "G25", "M25"};
     // a unit is the file named by its digits beside the caller: "019" -> 019.fms (§1.3)
     f.programFiles = [](const std::string& unit, const std::string& ext) {
       return std::vector<std::string>{unit + (ext.empty() ? std::string(".fms") : ext)};

@@ -56,6 +56,9 @@ MachineRules machineRules() {
   // G30/G31: fixed points 1 and 2 at N7001-N7401 / N7002-N7402, one parameter per axis
   // (001:1573); G28: machine zero (001:1560-1568)
   r.directReferencePointKey = "N7{0}0{1}";
+  // G60: approach from + with an overshoot of 1 mm. The manual sets both by a machine
+  // parameter it does not number (001:1203-1231); these are the spec's test values (§0).
+  r.oneSidedOvershoot = 1.0;
   // G43/G44 act along axis 3, 2 or 1 under G17, G18, G19 (001:1889-1931)
   r.lengthAlongPlaneNormal = true;
   r.surfaceSpeedAxis = 0;                  // the N1030 axis: X (§3.15)

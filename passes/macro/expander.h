@@ -126,6 +126,8 @@ private:
                  std::int64_t times, std::string what, const SourceRange& site,
                  std::size_t modalVisible);
   bool returnFromCall(Frame& f, const ir::Block& flat, const CodeMatch& m);
+  /// A repeated fragment's first or last block, after its NC part ran (repeats.cpp).
+  bool repeatBlock(Frame& f, const ir::Block& flat, const CodeMatch& m);
   std::string describe(const CodeMatch& m, const std::string& unit) const;
   bool tooDeep(const SourceRange& where);
 

@@ -29,6 +29,12 @@ struct BlockTail {
   std::size_t jump = static_cast<std::size_t>(-1); // the block to continue at
 };
 
+/// A repeated fragment (FMS G25 L ... M25): its opening block and the runs left.
+struct Repeat {
+  std::size_t head;
+  std::int64_t remaining;
+};
+
 struct Frame {
   const LoadedProgram* program = nullptr;
   std::size_t pc = 0;
@@ -39,7 +45,8 @@ struct Frame {
   std::string what;        // the program and the code that called it
   std::vector<Value> args; // an own local frame: the values each run starts from
   std::vector<Loop> loops;
-  bool ownLocals = false;                                  // the call opened a local frame
+  std::vector<Repeat> repeats; // open repeated fragments, innermost last
+  bool ownLocals = false;      // the call opened a local frame
   std::size_t modalVisible = static_cast<std::size_t>(-1); // modal calls this frame sees
   bool configured = false; // started by a code the machine parameters configure as a call
   BlockTail tail;          // of the block at pc

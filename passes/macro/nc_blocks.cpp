@@ -161,7 +161,7 @@ bool Expander::ncFlat(Frame& f, const ir::Block& b, ir::Block& flat) {
   }
   // the remapped codes of the block: a macro or modal call (the last one written), a
   // subprogram call, a return, a program end (the first one written)
-  CodeMatch primary, subprogram, back, end;
+  CodeMatch primary, subprogram, back, end, repeat;
   for (ir::Word& w : flat.words) {
     if (!remapped_) break;
     const CodeMatch m = match(w, flat);
@@ -179,6 +179,10 @@ bool Expander::ncFlat(Frame& f, const ir::Block& b, ir::Block& flat) {
     case FlowAction::EndProgram:
       if (!end.row) end = m;
       break;
+    case FlowAction::RepeatStart:
+    case FlowAction::RepeatEnd:
+      if (!repeat.row) repeat = m;
+      break;
     default: // CallMacro, CallCycle, Modal*
       primary = m;
     }
@@ -188,12 +192,12 @@ bool Expander::ncFlat(Frame& f, const ir::Block& b, ir::Block& flat) {
   if (const ModalCall* m = visibleModalCall(); m && m->everyBlock && !flat.words.empty())
     return everyBlockCall(f, b, flat, *m);
   if (primary.row) return call(f, b, primary);
-  if (subprogram.row || back.row || end.row) {
+  if (subprogram.row || back.row || end.row || repeat.row) {
     // the NC part of the block runs first, then the call or return (§1.4 K5)
     ir::Block nc = flat;
     std::erase_if(nc.words, [&](const ir::Word& w) {
       if (w.kind == ir::ValueKind::Path) return true;
-      for (const CodeMatch* m : {&subprogram, &back, &end})
+      for (const CodeMatch* m : {&subprogram, &back, &end, &repeat})
         if (m->row && (w.range.begin.offset == m->code->range.begin.offset ||
                        (m->row->programWord && w.is(m->row->programWord)) ||
                        (m->row->repeatWord && w.is(m->row->repeatWord))))
@@ -203,6 +207,7 @@ bool Expander::ncFlat(Frame& f, const ir::Block& b, ir::Block& flat) {
     bool stopped = false;
     const bool ok = runNcPart(b, std::move(nc), stopped);
     if (stopped) return ok;
+    if (repeat.row) return repeatBlock(f, flat, repeat);
     if (subprogram.row) return call(f, b, subprogram);
     if (back.row) return returnFromCall(f, flat, back);
     machine_.finish(); // a code that ends the program (an FMS program end)

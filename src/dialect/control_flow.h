@@ -41,6 +41,8 @@ enum class FlowAction : unsigned char {
   ModalCallEveryBlock, // register a call made after every NC block, and call now (G66.1)
   ModalCancel,         // remove the most recent modal call (G67)
   EndProgram,          // the program ends here (FMS M98)
+  RepeatStart,         // the blocks after this one up to RepeatEnd run repeatWord times (FMS G25 L)
+  RepeatEnd,           // the last block of a repeated fragment (FMS M25)
 };
 
 /// Where the called program's name comes from.

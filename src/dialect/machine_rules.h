@@ -155,6 +155,9 @@ struct MachineRules {
   /// (FMS-3000 G28/G30/G31, §3.8). The point of G-code arg n > 0 is read from the setup
   /// parameters under this fmt pattern ({0}: axis 0-2, {1}: n); arg 0 is machine zero.
   const char* directReferencePointKey = nullptr;
+  /// One-sided positioning: the sign is the direction of the final approach, the magnitude the
+  /// overshoot an axis moving the other way (or not at all) goes beyond its target first.
+  double oneSidedOvershoot = 0;
   /// The tool length offset acts along the normal of the selected plane (else along Z).
   bool lengthAlongPlaneNormal = false;
   /// Constant surface speed: the axis whose distance from zero is the radius (0 X, 1 Y, 2 Z).

@@ -96,10 +96,16 @@ enum class GAction : unsigned char {
   SurfaceSpeedOff,
   StrokeLimitOn,
   StrokeLimitOff,
-  DiameterMode, // G10.9: axis words 1 = diameter, 0 = radius programming
-  Modeless,     // state the motion model does not depend on (polar interpolation off...)
-  CornerArc,    // radius compensation: an arc of the tool radius at the next outer corner
-  VectorHold,   // radius compensation: the block ends with the vector it starts with
+  DiameterMode,        // G10.9: axis words 1 = diameter, 0 = radius programming
+  Modeless,            // state the motion model does not depend on (polar interpolation off...)
+  HelicalQualifier,    // with G02/G03: a helix by pitch (FMS-3000 G10, the normal axis's I/J/K)
+  OneSidedPositioning, // a rapid whose final approach always comes from one side (FMS G60)
+  ImplicitPlus,        // the other plane axis moves by +|the programmed one's travel| (FMS G47)
+  ImplicitMinus,       // ... by -|travel| (FMS G48); on an arc, a quarter circle of that radius
+  LevelDrillCycle,     // a drilling cycle by U/Z/I levels whose parameters follow its code (FMS
+                       // G81-G88); arg = the cycle number (cycles/level_drilling.h)
+  CornerArc,           // radius compensation: an arc of the tool radius at the next outer corner
+  VectorHold,          // radius compensation: the block ends with the vector it starts with
 };
 
 struct GCodeSpec {

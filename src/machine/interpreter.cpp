@@ -1,5 +1,6 @@
 #include "machine/interpreter.h"
 #include "machine/cycle_state.h"
+#include "machine/helix.h"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -264,6 +265,11 @@ bool Interpreter::executeBlock(const ir::Block& block) {
   if (!block.stmts.empty())
     return fail(diag::code::NotImplemented, block.stmts.front().range,
                 "macro statements need the macro expansion pass, which is not implemented yet");
+  for (const ir::Word& g : block.words) // FMS-3000 G81-G88: the words after the code are its own
+    if (g.is('G'))
+      if (const GCodeSpec* spec = profile_.gcode(g.number);
+          spec && spec->action == GAction::LevelDrillCycle)
+        return levelCycleBlock(block, g, *spec);
   BlockWords w;
   if (const ir::Word* bad = sortWords(block, profile_, w))
     return fail(diag::code::ExpressionNotExpanded, bad->range,
@@ -446,6 +452,10 @@ bool Interpreter::applyModal(const BlockWords& w) {
     case GAction::ReferenceReturn:
     case GAction::OtherReferenceReturn:
     case GAction::DiameterMode:
+    case GAction::HelicalQualifier:    // arc()
+    case GAction::OneSidedPositioning: // move()
+    case GAction::ImplicitPlus:
+    case GAction::ImplicitMinus:
       break; // applyNonMotion
     case GAction::RadiusCompLeft:
     case GAction::RadiusCompRight:
@@ -934,6 +944,9 @@ bool Interpreter::move(const BlockWords& w) {
   Vec3 to = target(w, true);
   if (!contourGeometry(w, to)) return false;
   const motion::Extra extraTo = extraTarget(w);
+  if (w.has(GAction::OneSidedPositioning)) return oneSidedRapid(w, to, extraTo);
+  if (w.has(GAction::ImplicitPlus) || w.has(GAction::ImplicitMinus))
+    return implicitCoordinate(w, to, extraTo);
   switch (state_.motion) {
   case GAction::Rapid:
     emitLine(Kind::Rapid, toMachine(to), extraTo);
@@ -964,12 +977,79 @@ bool Interpreter::move(const BlockWords& w) {
   }
 }
 
+// A rapid whose programmed axes end moving in the approach direction: an axis that would
+// arrive from the other side, or not move at all, first goes past its target by the overshoot
+// (FMS-3000 G60, fms3000.md §3.3).
+bool Interpreter::oneSidedRapid(const BlockWords& w, const Vec3& to, const motion::Extra& extraTo) {
+  const double overshoot = profile_.machine.oneSidedOvershoot;
+  const double side = overshoot < 0 ? -1.0 : 1.0;
+  Vec3 via = to;
+  bool detour = false;
+  for (int a = 0; a < 3; ++a) {
+    if (!axisGiven(w, a) || (to[a] - program_[a]) * side > 1e-9) continue;
+    via[a] = to[a] - overshoot;
+    detour = true;
+  }
+  if (detour) {
+    emitLine(Kind::Rapid, toMachine(via));
+    program_ = via;
+  }
+  emitLine(Kind::Rapid, toMachine(to), extraTo);
+  program_ = to;
+  return true;
+}
+
+// One axis of the plane programmed, the other moving by the same magnitude, + or - (FMS-3000
+// G47/G48, fms3000.md §3.7): a 45-degree line, or on an arc a quarter circle (the short arc of
+// radius |travel|).
+bool Interpreter::implicitCoordinate(const BlockWords& w, Vec3 to, const motion::Extra& extraTo) {
+  const motion::PlaneAxes ax = motion::axesOf(state_.plane);
+  const ir::Word* code = w.findAction(GAction::ImplicitPlus);
+  const double sign = code ? 1.0 : -1.0;
+  if (!code) code = w.findAction(GAction::ImplicitMinus);
+  const bool first = axisGiven(w, ax.first), second = axisGiven(w, ax.second);
+  if (first == second)
+    return fail(diag::code::ArcDefinition, code->range,
+                fmt::format("{} takes exactly one axis of the plane", gName(*code)));
+  const int p = first ? ax.first : ax.second, q = first ? ax.second : ax.first;
+  const double travel = std::fabs(to[p] - program_[p]);
+  if (travel < 1e-9)
+    return fail(diag::code::ArcDefinition, code->range,
+                fmt::format("{} without a move", gName(*code)));
+  to[q] = program_[q] + sign * travel;
+  if (state_.motion == GAction::Rapid || state_.motion == GAction::Linear) {
+    if (state_.motion == GAction::Linear && state_.feed <= 0)
+      return fail(diag::code::MissingData, blockRange_, "linear move without a feed rate F");
+    emitLine(state_.motion == GAction::Rapid ? Kind::Rapid : Kind::Feed, toMachine(to), extraTo);
+    program_ = to;
+    return true;
+  }
+  if (state_.motion != GAction::ArcCW && state_.motion != GAction::ArcCCW)
+    return fail(diag::code::NotImplemented, code->range,
+                fmt::format("{} in this motion mode is not implemented", gName(*code)));
+  if (state_.feed <= 0)
+    return fail(diag::code::MissingData, blockRange_, "arc without a feed rate F");
+  const bool cw = state_.motion == GAction::ArcCW;
+  const double s1 = program_[ax.first], s2 = program_[ax.second];
+  const double d1 = to[ax.first] - s1, d2 = to[ax.second] - s2, chord = std::hypot(d1, d2);
+  const double h = std::sqrt(std::max(0.0, travel * travel - chord * chord / 4));
+  const double side = cw ? -1.0 : 1.0; // the short arc's centre: right of the chord for G2
+  Vec3 centre = program_;
+  centre[ax.first] = s1 + d1 / 2 - side * h * d2 / chord;
+  centre[ax.second] = s2 + d2 / 2 + side * h * d1 / chord;
+  return arcTo(to, centre, cw, 1, extraTo, state_.feed);
+}
+
 bool Interpreter::arc(const BlockWords& w, const Vec3& end, const motion::Extra& extraEnd,
                       bool haveInPlaneEnd) {
   const motion::PlaneAxes ax = motion::axesOf(state_.plane);
   const bool cw = state_.motion == GAction::ArcCW;
   const SourceRange& at = blockRange_;
-  if (w.ijk[ax.normal])
+  const ir::Word* helixPitch = w.has(GAction::HelicalQualifier) ? w.ijk[ax.normal] : nullptr;
+  if (w.has(GAction::HelicalQualifier) && !helixPitch)
+    return fail(diag::code::ArcDefinition, w.findAction(GAction::HelicalQualifier)->range,
+                fmt::format("a helix needs its pitch {}", "IJK"[ax.normal]));
+  if (w.ijk[ax.normal] && !helixPitch)
     return fail(
         diag::code::ArcDefinition, w.ijk[ax.normal]->range,
         fmt::format("{} is outside the selected plane (nct.md §3.5)", w.ijk[ax.normal]->address));
@@ -1043,6 +1123,17 @@ bool Interpreter::arc(const BlockWords& w, const Vec3& end, const motion::Extra&
   Vec3 centre = start;
   centre[ax.first] = c1;
   centre[ax.second] = c2;
+  if (helixPitch) { // FMS-3000 G10: the turns follow from the travel and the pitch (§3.6)
+    const double travel = end[ax.normal] - start[ax.normal];
+    if (std::fabs(travel) < 1e-9)
+      return fail(diag::code::ArcDefinition, at,
+                  "a helix needs a move of the axis outside the arc's plane");
+    const auto plan =
+        planHelix(s1, s2, e1, e2, c1, c2, cw, travel, mm(helixPitch->number), radiusTolerance_);
+    if (const std::string* why = std::get_if<std::string>(&plan))
+      return fail(diag::code::ArcDefinition, helixPitch->range, *why);
+    turns = std::get<HelixPlan>(plan).fullTurns + 1;
+  }
   return arcTo(end, centre, cw, turns, extraEnd, state_.feed);
 }
 

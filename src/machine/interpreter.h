@@ -234,6 +234,10 @@ private:
   bool setCoordinates(const BlockWords& w);
   bool localCoordinates(const BlockWords& w);
   bool dataInput(const BlockWords& w, const ir::Block& b);
+  bool oneSidedRapid(const BlockWords& w, const Vec3& to, const motion::Extra& extraTo);
+  bool implicitCoordinate(const BlockWords& w, Vec3 to, const motion::Extra& extraTo);
+  /// A block with a level drilling cycle: its words before the code first, then the hole.
+  bool levelCycleBlock(const ir::Block& block, const ir::Word& code, const GCodeSpec& spec);
   bool directReferenceReturn(const BlockWords& w, int point);
   bool referenceReturn(const BlockWords& w, int point);
   bool machineMove(const BlockWords& w);
@@ -319,6 +323,8 @@ private:
   ContourSource contours_;
   std::optional<std::int64_t> resumeAfter_;
   const GCodeSpec* pendingTurning_ = nullptr; // a one-shot turning cycle in the current block
+  int levelCycle_ = 0;                        // the level drilling cycle whose words are kept
+  std::map<char, double> levelWords_;         // its parameters, remembered until G80 or another
   std::optional<double> pendingDwell_; // seconds, run after the block's motion (dwellAfterMotion)
   const GCodeSpec* turningMode_ = nullptr; // the modal G77.7-G79.7 while group 1 holds it
   std::optional<Vec3> turningEnd_;         // its last end point: omitted X/Z repeat it (§4.1)

@@ -86,6 +86,91 @@ TEST(Fms3000Vectors_8, T7_DwellInTenthsOfASecondAfterTheMotion) {
   EXPECT_EQ(run("G1X10F100G04E25 · G04E5 · M30"), (V{"L 10,0,0 F100", "DW 2.5s", "DW 0.5s"}));
 }
 
+TEST(Fms3000Vectors_8, T8_HelixByPitchQuarterTurn) {
+  // the manual's example with Y-50 (E17 corrected): 40 mm at 160 per turn is a quarter turn
+  EXPECT_EQ(run("G91G2G10X-50Y-50I-50Z40K160F100 · M30"), V{"CW -50,-50,40 C-50,0 r50 θ90"});
+}
+
+TEST(Fms3000Vectors_8, T9_HelixOfThreeTurnsEndingAboveItsStart) {
+  EXPECT_EQ(run("G0X10 · G3G10X10Y0I-10Z-6K-2F100 · M30"),
+            (V{"R 10,0,0", "CCW 10,0,-6 C0,0 r10 θ1080"}));
+}
+
+TEST(Fms3000Vectors_8, T10_TheManualsLiteralHelixIsInconsistent) {
+  // Y50: 270 degrees in the plane against a quarter turn of travel
+  EXPECT_EQ(errorsOf("G91G2G10X-50Y50I-50Z40K160F100"), V{"main.fms:1:23 2015"});
+}
+
+TEST(Fms3000Vectors_8, HelixWithoutPitchOrTravel) {
+  EXPECT_EQ(errorsOf("G91G2G10X-50Y-50I-50Z40F100"), V{"main.fms:1:6 2015"});       // 001:3840
+  EXPECT_EQ(errorsOf("G91G2G10X-50Y-50I-50K160F100"), V{"main.fms:1:1 2015"});      // 001:3844
+  EXPECT_EQ(errorsOf("G91G2G10X-50Y-50I-50Z-40K160F100"), V{"main.fms:1:25 2015"}); // sign
+}
+
+TEST(Fms3000Vectors_8, T11_ImplicitCoordinateLinesAndQuarterCircles) {
+  EXPECT_EQ(run("G1G91X10G47F100 · G1G91X10G48 · G2G91X-10G48 · G2G91Y10G48 · M30"),
+            (V{"L 10,10,0 F100", "L 20,0,0 F100", "CW 10,-10,0 C10,0 r10 θ90",
+               "CW 0,0,0 C10,0 r10 θ90"}));
+}
+
+TEST(Fms3000Vectors_8, T11_TheManualsEquivalentForms) {
+  // 001:1470-1508: G1 X10 G48 = G1 Y-10 G47; G2 X-10 G47 = G2 Y10 G48
+  EXPECT_EQ(run("G1G91X10G48F100 · M30"), run("G1G91Y-10G47F100 · M30"));
+  EXPECT_EQ(run("G2G91X-10G47F100 · M30"), V{"CW -10,10,0 C0,10 r10 θ90"});
+  EXPECT_EQ(run("G2G91Y10G48F100 · M30"), V{"CW -10,10,0 C0,10 r10 θ90"});
+  EXPECT_EQ(errorsOf("G1G91X10Y5G47F100"), V{"main.fms:1:11 2015"});
+}
+
+TEST(Fms3000Vectors_8, T12_FourHolesWithRememberedParameters) {
+  // E32: the words before G81 run first; Z and F are remembered from N2
+  EXPECT_EQ(run("N1 G54 G0 G90 X10 Z10 · N2 G81 U0.5 Z-15.5 F100 · N3 X30 G81 U-9.5 I-4. · "
+                "N4 X45 G81 U-4.5 I0.5 · N5 X65 G81 U0.5 Z-10 I10 · N6 G80 · M30"),
+            (V{"R 10,0,10", "R 10,0,0.5", "L 10,0,-15.5 F100", "R 10,0,0.5", "R 30,0,0.5",
+               "R 30,0,-9.5", "L 30,0,-15.5 F100", "R 30,0,-9.5", "R 30,0,-4", "R 45,0,-4",
+               "R 45,0,-4.5", "L 45,0,-15.5 F100", "R 45,0,-4.5", "R 45,0,0.5", "R 65,0,0.5",
+               "L 65,0,-10 F100", "R 65,0,0.5", "R 65,0,10"}));
+}
+
+TEST(Fms3000Vectors_8, T14_DeepDrillingAndTapping) {
+  EXPECT_EQ(
+      run("G0Z10 · M3S500 · G83U2Z-10V4W1F100 · G80 · G84U5Z-20F300E5 · G80 · M30"),
+      (V{"R 0,0,10", "EV S500 M3", "R 0,0,2", "L 0,0,-2 F100", "R 0,0,2", "R 0,0,-1",
+         "L 0,0,-6 F100", "R 0,0,2", "R 0,0,-5", "L 0,0,-10 F100", "R 0,0,2", "R 0,0,5",
+         "L 0,0,-20 F300", "EV S500 M4", "DW 0.5s", "L 0,0,5 F300", "DW 0.5s", "EV S500 M3"}));
+}
+
+TEST(Fms3000Vectors_8, T15_TheCycleAxisFollowsThePlane) {
+  EXPECT_EQ(run("G19G0X50Y10Z10 · G81U5Z-10F100 · M30"),
+            (V{"R 50,10,10", "R 5,10,10", "L -10,10,10 F100", "R 5,10,10"}));
+}
+
+// the worked examples of §5.2 (start X0 Y0 Z10, G17 G90)
+TEST(Fms3000Cycles_5_2, WorkedExamples) {
+  const std::string start = "G0Z10 · ";
+  EXPECT_EQ(run(start + "G81 U2 Z-10 F100 E5 · M30"),
+            (V{"R 0,0,10", "R 0,0,2", "L 0,0,-10 F100", "DW 0.5s", "R 0,0,2"}));
+  EXPECT_EQ(run(start + "G82 U2 Z-10 F100 H50 I5 · M30"),
+            (V{"R 0,0,10", "R 0,0,2", "L 0,0,-10 F100", "L 0,0,2 F50", "R 0,0,5"}));
+  EXPECT_EQ(run(start + "M3 S100 · G85 U2 Z-10 F100 · M30"),
+            (V{"R 0,0,10", "EV S100 M3", "R 0,0,2", "L 0,0,-10 F100", "EV S100 M5", "R 0,0,2",
+               "EV S100 M3"}));
+  EXPECT_EQ(run(start + "G86 U2 Z-10 V4 W1 F100 · M30"),
+            (V{"R 0,0,10", "R 0,0,2", "L 0,0,-2 F100", "R 0,0,-1", "L 0,0,-6 F100", "R 0,0,-5",
+               "L 0,0,-10 F100", "R 0,0,2"}));
+  EXPECT_EQ(run(start + "G87 U2 Z-10 V4 W5 F100 · M30"),
+            (V{"R 0,0,10", "R 0,0,2", "L 0,0,-2 F100", "DW 0.5s", "L 0,0,-6 F100", "DW 0.5s",
+               "L 0,0,-10 F100", "R 0,0,2"}));
+  EXPECT_EQ(run(start + "G91 G81 U-8 Z-12 I20 F100 · M30"),
+            (V{"R 0,0,10", "R 0,0,2", "L 0,0,-10 F100", "R 0,0,2", "R 0,0,10"}));
+}
+
+TEST(Fms3000Cycles_5_1, MandatoryAndExtraParametersAndG80ForgetsThem) {
+  EXPECT_EQ(errorsOf("G81 U2 F100"), V{"main.fms:1:1 2004"});        // no Z
+  EXPECT_EQ(errorsOf("G81 U2 Z-5 R1 F100"), V{"main.fms:1:1 2004"}); // R is Fanuc's
+  EXPECT_EQ(errorsOf("G81 U2 Z-5 F100 · G80 · G81 U1"), V{"main.fms:3:1 2004"});
+  EXPECT_EQ(errorsOf("G81 U2 Z-5 F100 · G82 U1"), V{"main.fms:2:1 2004"}); // another cycle
+}
+
 TEST(Fms3000Vectors_8, T16_G55G53ModalG54AndG92) {
   machine::Setup s = s0();
   s.workOffsets["G55"] = {500, 200, 100};
@@ -106,6 +191,17 @@ TEST(Fms3000Vectors_8, T17_LengthCompensationAndFixedPoints) {
   s.tools[1].length = 50;
   EXPECT_EQ(run("G0X30Y40Z100 · G43H1 · G0Z10 · G44H1Z10 · G49Z10 · G28X5Y5 · G30Z0 · M30", s),
             (V{"R 30,40,100", "R 30,40,60", "R 30,40,-40", "R 30,40,10", "R 0,0,10", "R 0,0,300"}));
+}
+
+TEST(Fms3000Vectors_8, T18_OneSidedPositioningApproachesFromPlus) {
+  EXPECT_EQ(run("G0X10 · G60X5 · G60X8 · G91G60X0 · M30"),
+            (V{"R 10,0,0", "R 4,0,0", "R 5,0,0", "R 8,0,0", "R 7,0,0", "R 8,0,0"}));
+}
+
+TEST(Fms3000Vectors_8, T18_G60IsARapidForOneBlockPerAxis) {
+  // under modal G1: X arrives from -, Y from +; the next block feeds again
+  EXPECT_EQ(run("G1X10F100 · G60X5Y3 · X6 · M30"),
+            (V{"L 10,0,0 F100", "R 4,3,0", "R 5,3,0", "L 6,3,0 F100"}));
 }
 
 TEST(Fms3000Vectors_8, T19_MirrorAboutAPointSwapsTheArcDirection) {
@@ -129,6 +225,27 @@ TEST(Fms3000Vectors_8, T20_G35EndsTheRotation) {
 TEST(Fms3000Vectors_8, T21_ScaleFactorsPerAxisAboutTheWorkOrigin) {
   EXPECT_EQ(run("G69X2Y2 · G1X10Y5F100 · G69X1Y1 · G1X10Y5 · M30"),
             (V{"L 20,10,0 F100", "L 10,5,0 F100"}));
+}
+
+TEST(Fms3000Vectors_8, T23_RepeatedFragmentThenACall) {
+  // L counts the runs of the fragment (§10 Q2); the G25 block itself runs once
+  const MacroRun r = runFms({{"main.fms", "G91G25L3\r\nG1X10F100\r\nM25\r\nG90X0P19\r\nM30\r\n"},
+                             {"19.fms", "G91G1Y5F100\r\nM99\r\n"}},
+                            s0());
+  ASSERT_EQ(r.errors, V{}) << r.rendered;
+  EXPECT_EQ(r.motion(), (V{"L 10,0,0 F100", "L 20,0,0 F100", "L 30,0,0 F100", "L 0,0,0 F100",
+                           "L 0,5,0 F100", "END"}));
+}
+
+TEST(Fms3000Vectors_8, T23_RepeatsNestAndTheM25BlockRunsEveryTime) {
+  EXPECT_EQ(run("G91G1F100 · G25L2 · X1 · G25L2 · Y1 · Z1M25 · X1M25 · M30"),
+            (V{"L 1,0,0 F100", "L 1,1,0 F100", "L 1,1,1 F100", "L 1,2,1 F100", "L 1,2,2 F100",
+               "L 2,2,2 F100", "L 3,2,2 F100", "L 3,3,2 F100", "L 3,3,3 F100", "L 3,4,3 F100",
+               "L 3,4,4 F100", "L 4,4,4 F100"}));
+}
+
+TEST(Fms3000Vectors_8, T23_M25WithoutG25) {
+  EXPECT_EQ(errorsOf("G1X1F100 · M25 · M30"), V{"main.fms:2:1 2125"});
 }
 
 TEST(Fms3000Vectors_8, T24_P19AndP019AreDifferentPrograms) {

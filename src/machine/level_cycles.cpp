@@ -1,0 +1,54 @@
+// The interpreter's side of the level drilling cycles (FMS-3000 G81-G88, fms3000.md §5.1): the
+// words before the cycle code are an ordinary block that runs first; the words after it are the
+// cycle's parameters, remembered while the same cycle is programmed again and cleared by G80
+// or another cycle; the hole's ops come from cycles/level_drilling.h.
+#include <fmt/format.h>
+#include <limits>
+
+#include "cycles/level_drilling.h"
+#include "diag/codes.h"
+#include "machine/interpreter.h"
+#include "motion/geometry.h"
+
+namespace gcx::machine {
+
+bool Interpreter::levelCycleBlock(const ir::Block& block, const ir::Word& code,
+                                  const GCodeSpec& spec) {
+  ir::Block before = block;
+  std::erase_if(before.words, [&](const ir::Word& w) { return w.order >= code.order; });
+  if (!before.words.empty() && !executeBlock(before)) return false;
+  if (levelCycle_ != spec.arg) levelWords_.clear();
+  levelCycle_ = spec.arg;
+  if (spec.group > 0 && spec.group < static_cast<int>(modalCodes_.size()))
+    modalCodes_[spec.group] = spec.code10;
+  for (const ir::Word& w : block.words) {
+    if (w.order <= code.order) continue;
+    if (w.address.size() != 1 || w.is('G'))
+      return fail(diag::code::ForbiddenAddress, w.range,
+                  fmt::format("{} is no parameter of G{}", w.address, spec.arg));
+    levelWords_[w.address[0]] = w.number;
+  }
+  const motion::PlaneAxes ax = motion::axesOf(state_.plane);
+  cycles::LevelDrillRequest req;
+  req.cycle = spec.arg;
+  req.axis = ax.normal;
+  req.firstAxis = ax.first;
+  req.secondAxis = ax.second;
+  req.position = program_;
+  req.incremental = state_.incremental;
+  req.words = levelWords_;
+  req.feed = state_.feed;
+  req.spindleDirection = state_.spindleDirection;
+  req.dwellSecondsPerUnit = profile_.machine.dwell.secondsPerUnit;
+  if (auto f = levelWords_.find('F'); f != levelWords_.end()) state_.feed = f->second;
+  const auto ops = cycles::expandLevelHole(req);
+  if (const std::string* why = std::get_if<std::string>(&ops))
+    return fail(diag::code::MissingData, code.range, *why);
+  from_.chain.push_back({code.range.begin, fmt::format("G{}", spec.arg)});
+  const bool ok = runCycleOps(std::get<std::vector<cycles::CycleOp>>(ops),
+                              std::numeric_limits<std::size_t>::max(), BlockWords{}, ax.normal);
+  from_.chain.pop_back();
+  return ok && !stopped_;
+}
+
+} // namespace gcx::machine
