@@ -118,6 +118,12 @@ bool checkCodeCombinations(const ir::Block& b, diag::Engine& diags) {
   return true;
 }
 
+bool hasCycleCode(const ir::Block& b) {
+  for (const ir::Word& w : b.words)
+    if (w.is('G') && isCycleCode(w.number)) return true;
+  return false;
+}
+
 } // namespace
 
 bool isCycleCode(double g) {
@@ -127,6 +133,18 @@ bool isCycleCode(double g) {
 bool checkBlockRules(const ir::Block& b, diag::Engine& diags) {
   warnFanucHabits(b, diags);
   if (!checkCodeCombinations(b, diags)) return false;
+  // a call and a program end in one block: the manual gives no order (§1.4, §10 Q21), so gcx
+  // refuses rather than guess (with the Fanuc warning above for M98 P)
+  if (const ir::Word* p = b.find('P'); p && !hasCycleCode(b))
+    for (const ir::Word& w : b.words)
+      if (w.is('M') && (w.number == 2 || w.number == 30 || w.number == 98)) {
+        diags.error(diag::code::FmsCallAndEnd, p->range,
+                    fmt::format("P{} calls a program in a block that ends the program (M{}); the "
+                                "manual gives no order: write the call in a block of its own "
+                                "(fms3000.md §1.4)",
+                                p->text, w.text));
+        return false;
+      }
   bool ok = true;
   bool cycle = false; // a word after a cycle code is its parameter (§5.1, §6.3)
   bool dwell = false;

@@ -193,6 +193,7 @@ TEST(Fms3000Syntax_9, FanucHabitsAreWarnedWithTheirLikelyIntent) {
   EXPECT_EQ(p.errors(), V{"1:5 2064"}); // L belongs to G25
   p = parseFms("M98 P1000\r\n");
   EXPECT_EQ(p.warnings(), V{"1:1 GCXW11"});
+  EXPECT_EQ(p.errors(), V{"1:5 FMSX03"}); // the call and the end: no documented order
   p = parseFms("G04 P500\r\n");
   EXPECT_EQ(p.warnings(), V{"1:5 GCXW11"});
   p = parseFms("G99 G81 U1 Z-5 R2 F100\r\n");
