@@ -192,7 +192,7 @@ void CanonicalEmitter::event(const motion::Event& e) {
     }
     plane_ = e.plane;
     line(fmt::format("{} {} D{}", motion::planeCode(plane_), e.value > 0 ? "G41.1" : "G42.1",
-                     num(2 * e.startRadius)),
+                     motion::formatDecimal(2 * e.startRadius, 6)),
          e);
     return;
   case Kind::PlaneChange:
