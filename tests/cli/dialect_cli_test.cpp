@@ -83,19 +83,33 @@ TEST_F(DialectCli, UnknownEncodingOrDialectIsAUsageError) {
 
 TEST_F(DialectCli, ExpandTargetsComeFromTheRegistry) {
   write("O0001.nct", "G81 X1 Y1 Z-1 R1 F100\nG80\nM30\n");
-  Result r = gcx("expand O0001.nct --to wl4");
-  EXPECT_EQ(r.exitCode, 2);
-  // WL4 is a target, but its G81-G89 are user programs: NCT's cycles cannot stay cycles there
-  EXPECT_EQ(
-      r.err,
-      "gcx: error: --to wl4 has no canned cycles, and expanding cycles is not implemented yet\n");
-  r = gcx("expand O0001.nct --to canonical --keep cycles");
+  Result r = gcx("expand O0001.nct --to canonical --keep cycles");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_EQ(r.err, "gcx: error: --keep cycles needs a target with canned cycles (--to nct); "
                    "canonical motion has none\n");
   r = gcx("expand O0001.nct --to nct --keep cycles");
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(r.out, "G81 X1 Y1 Z-1 R1 F100\nG80\nM30\n");
+}
+
+// Writing one dialect's blocks as another's would copy codes whose meaning differs (NCT G4 P is
+// seconds, FMS-3000 G04 P is not a dwell): that is translation, refused until it exists.
+TEST_F(DialectCli, ExpandToAnotherDialectIsRefused) {
+  write("O0001.nct", "G4 P1.5\nG81 X1 Y1 Z-1 R1 F100\nG80\nM30\n");
+  Result r = gcx("expand O0001.nct --to fms3000 -o out.fms");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.err, "gcx: error: --to fms3000 from a nct program is a translation between "
+                   "dialects, which is not implemented yet (--to canonical writes its motion)\n");
+  EXPECT_FALSE(fs::exists(dir_ / "out.fms"));
+  r = gcx("expand O0001.nct --to wl4");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.err, "gcx: error: --to wl4 from a nct program is a translation between dialects, "
+                   "which is not implemented yet (--to canonical writes its motion)\n");
+  write("P1.wl4", "%P1\nG4 E1.5\nM30\n%\n");
+  r = gcx("expand P1.wl4 --to nct");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.err, "gcx: error: --to nct from a wl4 program is a translation between dialects, "
+                   "which is not implemented yet (--to canonical writes its motion)\n");
 }
 
 } // namespace
