@@ -206,8 +206,8 @@ TEST_P(Fms3000Examples_7, ParsesAndPrintsBackWordForWord) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Manual, Fms3000Examples_7, testing::ValuesIn(kExamples),
-                         [](const testing::TestParamInfo<Example>& info) {
-                           return std::string(info.param.id);
+                         [](const testing::TestParamInfo<Example>& example) {
+                           return std::string(example.param.id);
                          });
 
 } // namespace

@@ -26,8 +26,8 @@ TEST_P(Fms3000BadInput, FirstErrorHasTheExpectedCodeAndLocation) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, Fms3000BadInput, testing::ValuesIn(badFiles()),
-                         [](const testing::TestParamInfo<fs::path>& info) {
-                           return info.param.stem().string();
+                         [](const testing::TestParamInfo<fs::path>& file) {
+                           return file.param.stem().string();
                          });
 
 TEST(Fms3000BadInputCorpus, HasAtLeastThirtyCases) {
