@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "cli/execute.h"
+#include "cli/setup_dialects.h"
 #include "dialect/dialect.h"
 #include "emit/canonical.h"
 #include "ir/dump.h"
@@ -220,7 +221,7 @@ Outcome readSetup(std::string_view input) {
   const std::string text(input);
   const FileId file = sm.addBuffer("setup.json", text);
   Outcome out;
-  (void)machine::parseSetup(text, file, diags);
+  (void)machine::parseSetup(text, file, diags, cli::setupDialects("nct"));
   out.violation = renderAll(diags, sm, out);
   return out;
 }

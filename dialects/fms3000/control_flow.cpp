@@ -49,6 +49,7 @@ const ControlFlow& controlFlow() {
   static const ControlFlow flow = [] {
     ControlFlow f;
     f.remaps = remapTable();
+    f.hasVariables = false; // no #-variables in the manual; user cycles are refused (FMSX01)
     f.expansionMarkers = {"P", "M98", "M99", "GG", "G25", "M25"};
     // a unit is the file named by its digits beside the caller: "019" -> 019.fms (§1.3)
     f.programFiles = [](const std::string& unit, const std::string& ext) {

@@ -60,6 +60,7 @@ MachineRules machineRules() {
   r.settings = settings();
   r.parameterKeyPrefix = "N"; // G10 L52 records (nct-macro.md §9.1)
   r.parameterKeyDigits = 4;
+  r.parameterBits = true; // N1300.3, N0607.ORI (docs/machine-model.md)
   r.mcodes = mcodes();
   r.speedTiming = r.toolTiming = MTiming::AfterMotion; // nct.md §2.2
   r.skipSense = SkipSense::SkipWhenOn;                 // nct.md §1.6
@@ -73,6 +74,7 @@ MachineRules machineRules() {
   r.setCoordinatesSIsSpindleLimit = true; // G92 S (nct.md §3.18)
   r.workOffsetNames = {"G54", "G55", "G56", "G57", "G58", "G59"};
   r.extendedWorkOffsetPrefix = "G54.1 P";
+  r.extendedWorkOffsets = 99; // G54.1 P1-P99 (nct.md §3.14)
   // look-ahead breakers of radius compensation (nct.md §3.17.7, 000:7745-7768)
   using G = GAction;
   r.compensation.breakers = {G::StrokeLimitOn,      G::StrokeLimitOff,   G::WorkOffset,

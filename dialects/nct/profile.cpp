@@ -184,6 +184,10 @@ Profile build() {
   p.machine = machineRules();
   p.exclusiveMCodes = {3, 4, 5, 19};   // one spindle command per block (000:4278-4280)
   p.dataModeLCodes = {52, 75, 76, 77}; // G10 L52 parameters, L75-77 tool tables (nct.md §1.10)
+  p.dataEntries = {{2, DataEntry::WorkOffset}, // G10 L2 P0-P6 (nct.md §3.14)
+                   {20, DataEntry::ExtendedWorkOffset},
+                   {10, DataEntry::ToolLength}, // gcx keeps geometry + wear per register
+                   {11, DataEntry::ToolLengthWear}};
   p.macroCallGCodes10 = {650, 660, 661};
   p.checkCallArguments = [](const ir::Block& b, diag::Engine& diags) {
     // statically only literal values are known; a variable may be vacant and skip its slot

@@ -25,7 +25,7 @@ MachineRules machineRules() {
   MachineRules r;
   r.settings = {{Setting::ArcRadiusTolerance, "arc_tolerance", nullptr, 0.002,
                  "arc end-point tolerance"}}; // wl4.md §0.2
-  r.parameterKeyPrefix = "P";
+  // no numbered parameters: the manual gives none (§0.2); arc_tolerance is gcx's setting
   r.mcodes = mcodes();
   r.speedTiming = r.toolTiming = MTiming::BeforeMotion;
   r.skipSense = SkipSense::RunWhenOn; // `/` blocks run only with the flag set (§1.7)

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "cli/block_pipeline.h"
+#include "cli/setup_dialects.h"
 #include "diag/codes.h"
 #include "machine/interpreter.h"
 #include "motion/work_frame.h"
@@ -76,7 +77,8 @@ int openWithSetup(Session& s, const std::string& file, const std::string& setupP
                   machine::Setup& setup) {
   if (!s.open(file)) return UsageError;
   if (setupPath.empty()) return Ok;
-  auto loaded = machine::loadSetup(setupPath, s.sources(), s.diags());
+  auto loaded =
+      machine::loadSetup(setupPath, s.sources(), s.diags(), setupDialects(s.dialect().name));
   if (!loaded) {
     const diag::Diagnostic* last = s.diags().lastError();
     const bool unreadable = last && last->code == diag::code::SetupCannotRead;

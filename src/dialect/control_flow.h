@@ -184,6 +184,7 @@ using ParameterLookup = std::function<double(const std::string& key, double fall
 struct ControlFlow {
   RemapTable remaps;
   VariableSpace variables;
+  bool hasVariables = true; // false: the language has no variables (FMS-3000)
   /// Words that mark a file as needing the expansion pass (calls, loops, jumps, prints).
   std::vector<std::string> expansionMarkers;
   /// A file is a sequence of program units `%name ... %` (WL4, wl4.md §1.2): the library

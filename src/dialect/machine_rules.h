@@ -136,6 +136,8 @@ struct MachineRules {
   /// with at least this many digits (NCT: "N" and four digits, docs/machine-model.md).
   std::string parameterKeyPrefix;
   int parameterKeyDigits = 1;
+  /// Numbered parameters have bits: key + "." + 0-7 or a bit's name (NCT, docs/setup.md).
+  bool parameterBits = false;
   std::vector<MCodeSpec> mcodes;
   MTiming speedTiming = MTiming::AfterMotion; // S (and G96's surface speed)
   MTiming toolTiming = MTiming::AfterMotion;  // T selects the next tool
@@ -171,6 +173,7 @@ struct MachineRules {
   /// the numbered extended ones (prefix + number).
   std::vector<std::string> workOffsetNames;
   std::string extendedWorkOffsetPrefix;
+  int extendedWorkOffsets = 0; // numbered 1..this
   CompensationRules compensation;
   ContourWords contour;
 

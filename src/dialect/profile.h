@@ -149,6 +149,18 @@ struct CycleChoices {
   bool patternStepByPassCount = false;
 };
 
+/// What one data-input block (NCT G10 L<n>) sets.
+enum class DataEntry : unsigned char {
+  WorkOffset,         // P0 the common shift, P1..n the standard work offsets
+  ExtendedWorkOffset, // P1..MachineRules::extendedWorkOffsets
+  ToolLength,         // register P = R (its geometry; the wear is kept)
+  ToolLengthWear,     // the wear of register P = R
+};
+struct DataEntryCode {
+  int l;
+  DataEntry entry;
+};
+
 struct Profile {
   std::string name;
   const ControlFlow* controlFlow = nullptr; // calls, variables, remaps (control_flow.h)
@@ -163,12 +175,13 @@ struct Profile {
   /// Several G codes of one modal group in a block: the last one wins (FMS-3000), not an error.
   bool lastOfModalGroupWins = false;
   int maxSkipLevel = 9;
-  int documentedSkipLevel = 8;        // levels above it are accepted with a warning
-  std::vector<int> dataModeLCodes;    // G10 L<n> starts a data-entry section ended by G11
-  std::vector<int> macroCallGCodes10; // G65, G66, G66.1: every other letter is an argument
-  std::vector<int> powerOnGCodes10;   // modal state at power-on and after reset
-  bool uvwIncremental = false;        // U V W are incremental X Y Z when not axes
-  MachineRules machine;               // word roles, M codes, settings (machine_rules.h)
+  int documentedSkipLevel = 8;            // levels above it are accepted with a warning
+  std::vector<int> dataModeLCodes;        // G10 L<n> starts a data-entry section ended by G11
+  std::vector<DataEntryCode> dataEntries; // what G10 L<n> sets in one block
+  std::vector<int> macroCallGCodes10;     // G65, G66, G66.1: every other letter is an argument
+  std::vector<int> powerOnGCodes10;       // modal state at power-on and after reset
+  bool uvwIncremental = false;            // U V W are incremental X Y Z when not axes
+  MachineRules machine;                   // word roles, M codes, settings (machine_rules.h)
   /// Static check of a macro call block's arguments (the dialect's argument specification).
   std::function<void(const ir::Block&, diag::Engine&)> checkCallArguments;
   /// System cycles written as macro programs, by program number (NCT: 9999, cycles.md §5).

@@ -145,11 +145,7 @@ private:
         return false;
       }
       oracle::applySetup(s, options_);
-      // the rapid rate for the times, as gcx's reader takes it
-      SourceManager sm;
-      diag::Engine d;
-      if (auto full = machine::parseSetup(setupText, sm.addBuffer(in_.setup, setupText), d))
-        setup_.rapidRate = full->rapidRate;
+      setup_.rapidRate = s.rapidRate; // for the times, as gcx's reader takes it
     }
     // T M6 needs the tool in rs274's table: the tools the setup does not give have length 0,
     // as in gcx's default setup

@@ -426,8 +426,10 @@ bool Interpreter::applyModal(const BlockWords& w) {
     switch (g->action) {
 
     case GAction::ExtendedWorkOffset: {
-      if (!w.p || w.p->number < 1 || w.p->number > 99 || w.p->number != std::floor(w.p->number))
-        return fail(diag::code::MissingData, word.range, "G54.1 needs P1 to P99");
+      const int n = profile_.machine.extendedWorkOffsets;
+      if (!w.p || w.p->number < 1 || w.p->number > n || w.p->number != std::floor(w.p->number))
+        return fail(diag::code::MissingData, word.range,
+                    fmt::format("G{:g} needs P1 to P{}", word.number, n));
       state_.workOffset = 100 + static_cast<int>(w.p->number);
       reexpress();
       break;
@@ -762,18 +764,29 @@ bool Interpreter::dataInput(const BlockWords& w, const ir::Block& dataBlock) {
     return true;
   }
   const bool add = state_.incremental;
-  if (l == 2 || l == 20) { // work offsets (nct.md §3.14)
-    if (!w.p) return fail(diag::code::MissingData, g->range, "G10 L2/L20 needs P");
+  const DataEntryCode* entry = nullptr;
+  for (const DataEntryCode& e : profile_.dataEntries)
+    if (e.l == l) entry = &e;
+  const std::string code = fmt::format("G{:g} L{}", g->number, l);
+  const auto standard = static_cast<int>(profile_.machine.workOffsetNames.size());
+  const int extended = profile_.machine.extendedWorkOffsets;
+  if (entry &&
+      (entry->entry == DataEntry::WorkOffset || entry->entry == DataEntry::ExtendedWorkOffset)) {
+    if (!w.p) return fail(diag::code::MissingData, g->range, code + " needs P");
     const int p = static_cast<int>(w.p->number);
+    const bool isStandard = entry->entry == DataEntry::WorkOffset;
     std::string key;
-    if (l == 2 && p == 0)
+    if (isStandard && p == 0)
       key = "common";
-    else if (l == 2 && p >= 1 && p <= static_cast<int>(profile_.machine.workOffsetNames.size()))
+    else if (isStandard && p >= 1 && p <= standard)
       key = workOffsetKey(p);
-    else if (l == 20 && p >= 1 && p <= 99)
+    else if (!isStandard && p >= 1 && p <= extended)
       key = workOffsetKey(100 + p);
     else
-      return fail(diag::code::DataOutOfRange, w.p->range, "G10 offset number out of range");
+      return fail(
+          diag::code::DataOutOfRange, w.p->range,
+          fmt::format("{} P{:g}: the offset numbers are {}", code, w.p->number,
+                      isStandard ? fmt::format("0-{}", standard) : fmt::format("1-{}", extended)));
     auto value = setup_.workOffset(key);
     for (int a = 0; a < 3; ++a)
       if (w.axis[a]) {
@@ -794,14 +807,15 @@ bool Interpreter::dataInput(const BlockWords& w, const ir::Block& dataBlock) {
     reexpress();
     return true;
   }
-  if (l == 10 || l == 11) { // length geometry / wear: gcx keeps their sum per register
-    if (!w.p || !w.r) return fail(diag::code::MissingData, g->range, "G10 L10/L11 needs P and R");
+  if (entry) { // length geometry / wear: gcx keeps their sum per register
+    const bool wear = entry->entry == DataEntry::ToolLengthWear;
+    if (!w.p || !w.r) return fail(diag::code::MissingData, g->range, code + " needs P and R");
     ToolData& t = setup_.tools[static_cast<int>(w.p->number)];
     const double v = mm(w.r->number);
     if (add || w.r->incremental) {
       t.length += v;
-      if (l == 11) wear_[static_cast<int>(w.p->number)] += v; // the geometry stays
-    } else if (l == 10)
+      if (wear) wear_[static_cast<int>(w.p->number)] += v; // the geometry stays
+    } else if (!wear)
       t.length = v + wear_[static_cast<int>(w.p->number)];
     else {
       t.length += v - wear_[static_cast<int>(w.p->number)];

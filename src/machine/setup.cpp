@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "diag/codes.h"
+#include "machine/setup_syntax.h"
 
 namespace gcx::machine {
 
@@ -313,54 +314,9 @@ std::optional<long> digits(std::string_view s) {
   return n;
 }
 
-bool isLetters(std::string_view s) {
-  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) {
-    return std::isalpha(static_cast<unsigned char>(c));
-  });
-}
-
-// "N1339", "n607.ori", "N1300.3" -> "N1339", "N0607.ORI", "N1300.3"
-std::optional<std::string> normaliseParameter(std::string_view k) {
-  if (k.empty() || (k[0] != 'N' && k[0] != 'n')) return std::nullopt;
-  const auto dot = k.find('.');
-  const std::string_view number = k.substr(1, dot == std::string_view::npos ? k.npos : dot - 1);
-  if (number.size() > 4 || !digits(number)) return std::nullopt;
-  std::string out = "N" + std::string(4 - number.size(), '0') + std::string(number);
-  if (dot == std::string_view::npos) return out;
-  const std::string_view bit = k.substr(dot + 1);
-  if (bit.size() == 1 && bit[0] >= '0' && bit[0] <= '7') return out + "." + std::string(bit);
-  if (!isLetters(bit)) return std::nullopt;
-  out += '.';
-  for (char c : bit)
-    out += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return out;
-}
-
-bool isWorkOffsetKey(std::string_view k) {
-  if (k == "common") return true;
-  if (k.size() == 3 && k.starts_with("G5") && k[2] >= '4' && k[2] <= '9') return true;
-  if (!k.starts_with("G54.1 P")) return false;
-  const std::string_view n = k.substr(7);
-  const auto p = digits(n);
-  return p && *p >= 1 && *p <= 99 && n[0] != '0';
-}
-
-// The intended key for a near miss: "g55", "G54.1P7", "G54.1 P07", "COMMON".
-std::optional<std::string> workOffsetSpelling(std::string_view k) {
-  std::string s;
-  for (char c : k)
-    if (c != ' ') s += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  std::string fixed = s;
-  if (s == "COMMON")
-    fixed = "common";
-  else if (s.starts_with("G54.1P"))
-    if (auto p = digits(std::string_view(s).substr(6))) fixed = fmt::format("G54.1 P{}", *p);
-  if (fixed == k || !isWorkOffsetKey(fixed)) return std::nullopt;
-  return fixed;
-}
-
 constexpr std::string_view topKeys = "work_offsets, tools, parameters, variables, "
                                      "initial_position, block_skip, reference_points, rapid_rate";
+constexpr std::string_view sectionKeys = "parameters, variables";
 
 struct Problem {
   const char* code;
@@ -372,7 +328,8 @@ struct Problem {
 // Walks the DOM, fills the Setup and collects every problem with its place in the text.
 class Checker {
 public:
-  explicit Checker(const Locator& locator) : loc_(locator) {}
+  Checker(const Locator& locator, const SetupDialects& dialects)
+      : loc_(locator), dialects_(dialects) {}
 
   std::vector<Problem> problems;
 
@@ -391,10 +348,10 @@ public:
         workOffsets(it.value(), child, out);
       else if (k == "tools")
         tools(it.value(), child, out);
-      else if (k == "parameters")
-        parameters(it.value(), child, out);
-      else if (k == "variables")
-        variables(it.value(), child, out);
+      else if (k == "parameters" || k == "variables") {
+        if (dialects_.own) sectionEntry(k, it.value(), child, *dialects_.own, out);
+      } else if (const SetupSyntax* d = dialects_.find(k))
+        section(it.value(), child, *d, out);
       else if (k == "initial_position") {
         if (auto xyz = triple(it.value(), child, "initial_position")) out.initialPosition = *xyz;
       } else if (k == "block_skip")
@@ -405,7 +362,8 @@ public:
         rapidRate(it.value(), child, out);
       else
         atKey(child, code::SetupUnknownKey,
-              fmt::format("unknown key {} in the setup; the keys are {}", keyName(k), topKeys));
+              fmt::format("unknown key {} in the setup; the keys are {}{}", keyName(k), topKeys,
+                          sectionNames()));
     }
     for (const Locator::Duplicate& d : loc_.duplicates())
       problems.push_back({code::SetupBadValue, d.again,
@@ -460,7 +418,7 @@ private:
     return ok ? std::optional(xyz) : std::nullopt;
   }
 
-  // Two spellings of one entry ("N1339" and "n1339", "#500" and "#0500"): the later one is
+  // Two spellings of one entry (a parameter in two cases, "#500" and "#0500"): the later one is
   // the error, the earlier one its note.
   void once(std::map<std::string, Path>& seen, const std::string& id, const Path& p,
             std::string_view what) {
@@ -479,14 +437,13 @@ private:
     for (auto it = v.begin(); it != v.end(); ++it) {
       const std::string& k = it.key();
       const Path at = child(p, k);
-      const bool good = isWorkOffsetKey(k);
+      const bool good = isWorkOffset(k);
       if (!good) {
         const auto fix = workOffsetSpelling(k);
         atKey(at, code::SetupBadValue,
               fix ? fmt::format("work offset {} should be written \"{}\"", keyName(k), *fix)
-                  : fmt::format("{} is not a work offset; the keys are G54..G59, "
-                                "\"G54.1 P1\"..\"G54.1 P99\" and \"common\"",
-                                keyName(k)));
+                  : fmt::format("{} is not a work offset; the keys are {}", keyName(k),
+                                workOffsetHelp()));
       }
       const auto xyz = triple(it.value(), at, fmt::format("work offset {}", good ? k : keyName(k)));
       if (good && xyz) out.workOffsets[k] = *xyz;
@@ -537,56 +494,76 @@ private:
     }
   }
 
-  void parameters(const json& v, const Path& p, Setup& out) {
+  // A dialect's section: its parameters and variables, for its programs only.
+  void section(const json& v, const Path& p, const SetupSyntax& d, Setup& out) {
+    if (!object(v, p, fmt::format("the {} section", d.dialect))) return;
+    for (auto it = v.begin(); it != v.end(); ++it) {
+      const Path at = child(p, it.key());
+      if (it.key() == "parameters" || it.key() == "variables")
+        sectionEntry(it.key(), it.value(), at, d, out);
+      else
+        atKey(at, code::SetupUnknownKey,
+              fmt::format("unknown key {} in the {} section; the keys are {}", keyName(it.key()),
+                          d.dialect, sectionKeys));
+    }
+  }
+
+  void sectionEntry(const std::string& k, const json& v, const Path& p, const SetupSyntax& d,
+                    Setup& out) {
+    const bool apply = dialects_.own && dialects_.own->dialect == d.dialect;
+    if (k == "parameters")
+      parameters(v, p, d, apply, out);
+    else
+      variables(v, p, d, apply, out);
+  }
+
+  void parameters(const json& v, const Path& p, const SetupSyntax& d, bool apply, Setup& out) {
     if (!object(v, p, "parameters")) return;
-    std::map<std::string, Path> seen;
+    std::map<std::string, Path>& seen = seenParameters_[d.dialect];
     for (auto it = v.begin(); it != v.end(); ++it) {
       const std::string& k = it.key();
       const Path at = child(p, k);
-      const auto name = normaliseParameter(k);
+      const auto name = d.parameterKey(k);
       if (name) {
         once(seen, *name, at, fmt::format("parameter {}", *name));
       } else {
         const auto dot = k.find('.');
-        const bool digitBit = dot != std::string::npos && dot + 1 < k.size() &&
-                              normaliseParameter(k.substr(0, dot)) &&
+        const bool digitBit = d.parameterBits && dot != std::string::npos && dot + 1 < k.size() &&
+                              d.parameterKey(k.substr(0, dot)) &&
                               digits(std::string_view(k).substr(dot + 1));
         atKey(at, code::SetupBadValue,
               digitBit ? fmt::format("{}: bit numbers are 0..7", keyName(k))
-                       : fmt::format("{} is not a parameter; write N and 1-4 digits, optionally "
-                                     "followed by .BIT with BIT 0-7 or a bit name (N1339, "
-                                     "N0607.ORI, N1300.3)",
-                                     keyName(k)));
+                       : fmt::format("{} is not a parameter; {}", keyName(k), d.parameterHelp()));
       }
       const auto x = number(it.value(), at, fmt::format("parameter {}", name ? *name : keyName(k)));
       if (!name || !x) continue;
-      if (name->find('.') != std::string::npos && *x != 0 && *x != 1) {
+      if (d.parameterBits && name->find('.') != std::string::npos && *x != 0 && *x != 1) {
         atValue(at, code::SetupBadValue,
                 fmt::format("bit parameter {} must be 0 or 1, not {}", *name, *x));
         continue;
       }
-      out.parameters[*name] = *x;
+      if (apply) out.parameters[*name] = *x;
     }
   }
 
-  void variables(const json& v, const Path& p, Setup& out) {
+  void variables(const json& v, const Path& p, const SetupSyntax& d, bool apply, Setup& out) {
     if (!object(v, p, "variables")) return;
-    std::map<std::string, Path> seen;
+    std::map<std::string, Path>& seen = seenVariables_[d.dialect];
     for (auto it = v.begin(); it != v.end(); ++it) {
       const std::string& k = it.key();
       const Path at = child(p, k);
       const auto n = k.starts_with('#') ? digits(std::string_view(k).substr(1)) : std::nullopt;
-      const bool good = n && ((*n >= 1 && *n <= 33) || (*n >= 100 && *n <= 999));
+      const bool good = n && d.presettable(static_cast<long long>(*n));
       if (!n)
         atKey(at, code::SetupBadValue,
               fmt::format("{} is not a macro variable; write #n, e.g. \"#500\"", keyName(k)));
       else if (!good)
         atKey(at, code::SetupBadValue,
-              fmt::format("#{} cannot be preset; the setup may set #1-#33 and #100-#999", *n));
+              fmt::format("#{} cannot be preset; {}", *n, d.variableHelp()));
       else
         once(seen, std::to_string(*n), at, fmt::format("variable #{}", *n));
       const auto x = number(it.value(), at, good ? fmt::format("#{}", *n) : keyName(k));
-      if (good && x) out.variables[static_cast<int>(*n)] = *x;
+      if (good && x && apply) out.variables[static_cast<int>(*n)] = *x;
     }
   }
 
@@ -634,7 +611,37 @@ private:
     out.rapidRate = *x;
   }
 
+  // Work-offset keys: the program's dialect's, or any known dialect's (a setup shared by the
+  // programs of a translation names the offsets of both).
+  bool isWorkOffset(std::string_view k) const {
+    if (dialects_.own && dialects_.own->isWorkOffset(k)) return true;
+    return std::any_of(dialects_.all.begin(), dialects_.all.end(),
+                       [&](const SetupSyntax& d) { return d.isWorkOffset(k); }) ||
+           (!dialects_.own && dialects_.all.empty());
+  }
+  std::optional<std::string> workOffsetSpelling(std::string_view k) const {
+    if (dialects_.own)
+      if (auto fix = dialects_.own->workOffsetSpelling(k)) return fix;
+    for (const SetupSyntax& d : dialects_.all)
+      if (auto fix = d.workOffsetSpelling(k)) return fix;
+    return std::nullopt;
+  }
+  std::string workOffsetHelp() const {
+    if (dialects_.own) return dialects_.own->workOffsetHelp();
+    return dialects_.all.empty() ? std::string("\"common\"")
+                                 : dialects_.all.front().workOffsetHelp();
+  }
+  std::string sectionNames() const {
+    std::vector<std::string> names;
+    for (const SetupSyntax& d : dialects_.all)
+      names.push_back(d.dialect);
+    return names.empty() ? std::string()
+                         : fmt::format(", and the dialect sections {}", fmt::join(names, ", "));
+  }
+
   const Locator& loc_;
+  const SetupDialects& dialects_;
+  std::map<std::string, std::map<std::string, Path>> seenParameters_, seenVariables_;
 };
 
 } // namespace
@@ -646,11 +653,12 @@ std::array<double, 3> Setup::workOffset(const std::string& key) const {
 
 double Setup::parameter(const std::string& key, double fallback) const {
   if (parameters.empty()) return fallback; // the common case, asked for on every block
-  const auto it = parameters.find(normaliseParameter(key).value_or(key));
+  const auto it = parameters.find(key);
   return it == parameters.end() ? fallback : it->second;
 }
 
-std::optional<Setup> parseSetup(const std::string& text, FileId file, diag::Engine& diags) {
+std::optional<Setup> parseSetup(const std::string& text, FileId file, diag::Engine& diags,
+                                const SetupDialects& dialects) {
   const Lines lines(text);
   SyntaxProbe probe;
   json::sax_parse(text, &probe, json::input_format_t::json, true, /*ignore_comments=*/true);
@@ -677,7 +685,7 @@ std::optional<Setup> parseSetup(const std::string& text, FileId file, diag::Engi
   }
 
   const Locator locator(text);
-  Checker check(locator);
+  Checker check(locator, dialects);
   Setup setup;
   check.root(dom, setup);
   if (check.problems.empty()) return setup;
@@ -694,8 +702,8 @@ std::optional<Setup> parseSetup(const std::string& text, FileId file, diag::Engi
   return std::nullopt;
 }
 
-std::optional<Setup> loadSetup(const std::string& path, SourceManager& sources,
-                               diag::Engine& diags) {
+std::optional<Setup> loadSetup(const std::string& path, SourceManager& sources, diag::Engine& diags,
+                               const SetupDialects& dialects) {
   auto fail = [&](const std::string& why) {
     diags.error(code::SetupCannotRead, {},
                 fmt::format("{}: cannot read the setup file: {}", path, why));
@@ -708,7 +716,7 @@ std::optional<Setup> loadSetup(const std::string& path, SourceManager& sources,
   std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   if (in.bad()) return fail("read error");
   const FileId file = sources.addBuffer(path, text);
-  return parseSetup(text, file, diags);
+  return parseSetup(text, file, diags, dialects);
 }
 
 } // namespace gcx::machine

@@ -1,15 +1,16 @@
 // The machine setup a program runs under (`--setup FILE`): work offsets, tool table, machine
 // parameters, preset macro variables, start position, block-skip switches, reference points.
-// A JSON file; every section is optional and a missing one means the nct.md §0.2 reference
-// profile (machine at 0,0,0, no offsets):
+// A JSON file; every section is optional and a missing one means the reference machine
+// (machine at 0,0,0, no offsets). docs/setup.md has the whole format:
 //   {"work_offsets": {"G54": [x, y, z], "G54.1 P1": [x, y, z], "common": [x, y, z]},
 //    "tools": {"1": {"length": 101.6, "radius": 5}, "11": {"turning": [152.3, 0, 96.5]}},
-//    "parameters": {"N1339": 0.01, "N0607.ORI": 1, "N1300.3": 1},
-//    "variables": {"#500": 1.5},
+//    "parameters": {...}, "variables": {"#500": 1.5},   (the program's dialect's)
+//    "nct": {"parameters": {...}, "variables": {...}},  (a dialect's own section)
 //    "initial_position": [x, y, z],
 //    "block_skip": [1, 3],
 //    "reference_points": {"1": [x, y, z], "2": [x, y, z]},
 //    "rapid_rate": 10000}
+// The keys of work offsets, parameters and variables are the dialect's (setup_syntax.h).
 // Lengths in mm, positions in machine coordinates. `//` and `/* */` comments are allowed.
 #pragma once
 #include <array>
@@ -20,6 +21,7 @@
 
 #include "diag/diagnostic.h"
 #include "ir/source.h"
+#include "machine/setup_syntax.h"
 
 namespace gcx::machine {
 
@@ -35,9 +37,9 @@ struct Setup {
   /// "G54.1 P99", "common" (the G10 L2 P0 external shift added to all of them).
   std::map<std::string, std::array<double, 3>> workOffsets;
   std::map<int, ToolData> tools; // 0..999
-  /// Key normalised to "N" + 4 digits, bit part upper case: "N1339", "N0607.ORI", "N1300.3".
+  /// The program's dialect's parameters under their canonical keys (SetupSyntax::parameterKey).
   std::map<std::string, double> parameters;
-  std::map<int, double> variables; // #n -> value; n in 1..33 or 100..999
+  std::map<int, double> variables; // #n -> value, the program's dialect's
   std::array<double, 3> initialPosition{0, 0, 0};
   std::set<int> blockSkip; // switches that are ON, 1..9
   /// G28/G30 reference points 1..4 in machine coordinates; all four are always present.
@@ -46,16 +48,17 @@ struct Setup {
 
   /// The offset stored under key ("G54", "G54.1 P7", "common"), zeros if absent.
   std::array<double, 3> workOffset(const std::string& key) const;
-  /// The parameter's value, or fallback if the setup does not set it. key is normalised the
-  /// way the file's keys are, so "N607.ori" finds "N0607.ORI".
+  /// The parameter's value under its canonical key, or fallback if the setup does not set it.
   double parameter(const std::string& key, double fallback) const;
 };
 
-/// Reads a setup file; on any error reports located diagnostics (all of them, not only the
-/// first) and returns nullopt. An unreadable file is GCX024 without a location.
-std::optional<Setup> loadSetup(const std::string& path, SourceManager& sources,
-                               diag::Engine& diags);
+/// Reads a setup file for a program of dialects.own; on any error reports located diagnostics
+/// (all of them, not only the first) and returns nullopt. An unreadable file is GCX024 without
+/// a location.
+std::optional<Setup> loadSetup(const std::string& path, SourceManager& sources, diag::Engine& diags,
+                               const SetupDialects& dialects);
 /// Parses setup text already registered as file (locations point into it).
-std::optional<Setup> parseSetup(const std::string& text, FileId file, diag::Engine& diags);
+std::optional<Setup> parseSetup(const std::string& text, FileId file, diag::Engine& diags,
+                                const SetupDialects& dialects);
 
 } // namespace gcx::machine

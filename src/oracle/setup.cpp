@@ -16,6 +16,14 @@ int workOffsetIndex(const std::string& name) {
   return 0;
 }
 
+// {"parameters": ..., "variables": ...}: a dialect's own section, which gcx's reader checks
+bool isDialectSection(const nlohmann::json& v) {
+  if (!v.is_object() || v.empty()) return false;
+  for (auto it = v.begin(); it != v.end(); ++it)
+    if (it.key() != "parameters" && it.key() != "variables") return false;
+  return true;
+}
+
 } // namespace
 
 bool parseSetupJson(std::string_view text, OracleSetup& out, std::string& error) {
@@ -103,8 +111,14 @@ bool parseSetupJson(std::string_view text, OracleSetup& out, std::string& error)
         error = "setup JSON: block_skip switches cannot be given to rs274 (it runs `/` blocks)";
         return false;
       }
+    } else if (key == "rapid_rate") {
+      if (!value.is_number() || value.get<double>() <= 0) {
+        error = "setup JSON: rapid_rate must be a number above 0";
+        return false;
+      }
+      out.rapidRate = value.get<double>();
     } else if (key == "parameters" || key == "variables" || key == "reference_points" ||
-               key == "rapid_rate") {
+               isDialectSection(value)) {
       // not needed by rs274 for the common subset (no macros, no G28/G30 in the corpus)
     } else {
       error = fmt::format("setup JSON: unknown key '{}'", key);

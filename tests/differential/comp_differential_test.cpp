@@ -11,6 +11,7 @@
 #include <sstream>
 #include <sys/wait.h>
 
+#include "cli/setup_dialects.h"
 #include "differential/oracle_run.h"
 #include "emit/canonical.h"
 #include "machine/setup.h"
@@ -61,7 +62,8 @@ Runs runGcx(const std::string& name) {
   const std::string json = readFile(contours() / "setup.json");
   SourceManager sm;
   diag::Engine diags;
-  const auto setup = machine::parseSetup(json, sm.addBuffer("setup.json", json), diags);
+  const auto setup =
+      machine::parseSetup(json, sm.addBuffer("setup.json", json), diags, cli::setupDialects("nct"));
   EXPECT_TRUE(setup.has_value());
   std::ostringstream text;
   emit::CanonicalEmitter emitter(text);

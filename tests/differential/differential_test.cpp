@@ -7,6 +7,7 @@
 
 #include <sstream>
 
+#include "cli/setup_dialects.h"
 #include "differential/oracle_run.h"
 #include "emit/canonical.h"
 #include "machine/setup.h"
@@ -35,7 +36,8 @@ machine::Setup setupOf(const std::string& name) {
   if (!fs::exists(file)) return {};
   SourceManager sm;
   diag::Engine diags;
-  auto s = machine::parseSetup(readFile(file), sm.addBuffer(file.string(), readFile(file)), diags);
+  auto s = machine::parseSetup(readFile(file), sm.addBuffer(file.string(), readFile(file)), diags,
+                               cli::setupDialects("nct"));
   EXPECT_TRUE(s.has_value()) << file;
   return s.value_or(machine::Setup{});
 }

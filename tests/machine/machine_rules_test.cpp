@@ -218,5 +218,16 @@ TEST(MachineRules, WorkOffsetNamesComeFromTheProfile) {
   EXPECT_EQ(run(other, text, s), (Lines{"R 4,5,6", "R 0,0,1", "END"}));
 }
 
+// G10's L numbers and the extended work offsets' count are the profile's data (nct.md §3.14).
+TEST(MachineRules, DataEntryCodesComeFromTheProfile) {
+  const std::string text = "G10 L20 P99 X5\nG54.1 P99 G0 X0 Y0 Z0\nG10 L20 P100 X1\n";
+  EXPECT_EQ(run(nct::profile(), text), (Lines{"R 5,0,0", "3:9 2002"}));
+  Profile other = nctWith([](MachineRules& r) { r.extendedWorkOffsets = 3; });
+  other.dataEntries = {{7, DataEntry::ExtendedWorkOffset}, {2, DataEntry::WorkOffset}};
+  EXPECT_EQ(run(other, "G10 L7 P3 X5\nG54.1 P3 G0 X0 Y0 Z0\n"), (Lines{"R 5,0,0", "END"}));
+  EXPECT_EQ(run(other, "G54.1 P4 G0 X0\n"), (Lines{"1:1 2004"}));
+  EXPECT_EQ(run(other, "G10 L20 P1 X5\n"), (Lines{"1:1 GCX030"})); // L20 is not its code
+}
+
 } // namespace
 } // namespace gcx::test

@@ -6,6 +6,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "cli/setup_dialects.h"
 #include "diag/codes.h"
 
 namespace gcx::test {
@@ -38,7 +39,8 @@ struct Loaded {
 };
 
 void parse(Loaded& l, const std::string& text) {
-  l.setup = machine::parseSetup(text, l.sources.addBuffer("setup.json", text), l.diags);
+  l.setup = machine::parseSetup(text, l.sources.addBuffer("setup.json", text), l.diags,
+                                cli::setupDialects("nct"));
 }
 
 // The key ranges at their edges: G54..G59, G54.1 P1..P99, tools 0..999, bits 0..7.
@@ -92,7 +94,7 @@ TEST(Setup, ValidFileGivesExactValues) {
   EXPECT_EQ(s.parameters, (std::map<std::string, double>{
                               {"N1339", 0.01}, {"N0607.ORI", 1}, {"N1300.3", 1}, {"N0012", 7}}));
   EXPECT_EQ(s.parameter("N1339", 0), 0.01);
-  EXPECT_EQ(s.parameter("N607.ORI", 0), 1); // looked up normalised, like the file's keys
+  EXPECT_EQ(s.parameter("N0607.ORI", 0), 1); // under the canonical key the file's became
   EXPECT_EQ(s.parameter("N1404", 3), 3);
   EXPECT_EQ(s.variables, (std::map<int, double>{{1, -2}, {500, 1.5}, {999, 0}}));
   EXPECT_EQ(s.initialPosition, (Xyz{10, 20, 30}));
@@ -164,7 +166,8 @@ TEST(Setup, UnknownKeysNameTheAllowedOnes) {
   EXPECT_EQ(l.errors(), (std::vector<std::string>{"3:3 GCX021", "4:32 GCX021"}));
   EXPECT_EQ(l.message(0), "unknown key \"tool\" in the setup; the keys are work_offsets, tools, "
                           "parameters, variables, initial_position, block_skip, "
-                          "reference_points, rapid_rate");
+                          "reference_points, rapid_rate, and the dialect sections nct, fms3000, "
+                          "wl4");
   EXPECT_EQ(l.message(1),
             "unknown key \"diameter\" in tool 3; the keys are length, radius, turning");
 }
@@ -324,7 +327,7 @@ TEST(Setup, LoadReadsTheFileAndNamesItInLocations) {
     out << "{\"tools\": {\"5\": {\"radius\": 2}},\n \"rapid_rate\": \"x\"}\n";
   }
   Loaded l;
-  EXPECT_FALSE(machine::loadSetup(path.string(), l.sources, l.diags));
+  EXPECT_FALSE(machine::loadSetup(path.string(), l.sources, l.diags, cli::setupDialects("nct")));
   EXPECT_EQ(l.errors(), (std::vector<std::string>{"2:16 GCX022"}));
   EXPECT_THAT(l.rendered(), HasSubstr(path.string() + ":2:16: error:"));
   {
@@ -332,7 +335,8 @@ TEST(Setup, LoadReadsTheFileAndNamesItInLocations) {
     out << "{\"tools\": {\"5\": {\"radius\": 2}}}\n";
   }
   Loaded ok;
-  const auto setup = machine::loadSetup(path.string(), ok.sources, ok.diags);
+  const auto setup =
+      machine::loadSetup(path.string(), ok.sources, ok.diags, cli::setupDialects("nct"));
   std::filesystem::remove(path);
   ASSERT_TRUE(setup);
   EXPECT_EQ(setup->tools.at(5).radius, 2);
@@ -342,7 +346,7 @@ TEST(Setup, UnreadableFileIsReportedWithoutLocation) {
   for (const std::string& path :
        {std::string("/nonexistent/setup.json"), std::filesystem::temp_directory_path().string()}) {
     Loaded l;
-    EXPECT_FALSE(machine::loadSetup(path, l.sources, l.diags));
+    EXPECT_FALSE(machine::loadSetup(path, l.sources, l.diags, cli::setupDialects("nct")));
     ASSERT_EQ(l.diags.all().size(), 1u);
     const diag::Diagnostic& d = l.diags.all()[0];
     EXPECT_EQ(d.code, diag::code::SetupCannotRead);
