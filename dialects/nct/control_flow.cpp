@@ -6,6 +6,7 @@
 #include "dialects/nct/arguments.h"
 #include "dialects/nct/configured_calls.h"
 #include "dialects/nct/system_variables.h"
+#include "dialects/nct/word_value_rules.h"
 
 namespace gcx::nct {
 
@@ -116,6 +117,8 @@ const ControlFlow& controlFlow(const std::vector<CycleMacro>& cycleMacros) {
     ControlFlow f;
     f.remaps = remapTable(cycleMacros);
     f.variables = VariableSpace{1, 33, 100, 999}; // §2.1
+    f.wordValues = wordValueRules();              // §2.6
+    f.channelAxes = "XYZABC";                     // AX[1]..AX[6] (§2.6)
     // G70.7-G73.7 read their contour blocks by N number, as jumps do
     f.expansionMarkers = {"M98", "M99",   "G65",   "G66",   "GOTO",  "WHILE", "DO",    "END",
                           "IF",  "DPRNT", "BPRNT", "POPEN", "G70.7", "G71.7", "G72.7", "G73.7"};

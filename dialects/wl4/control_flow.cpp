@@ -1,6 +1,7 @@
 #include "dialects/wl4/control_flow.h"
 
 #include "dialects/wl4/system_programs.h"
+#include "dialects/wl4/word_value_rules.h"
 
 namespace gcx::wl4 {
 
@@ -53,6 +54,7 @@ const ControlFlow& controlFlow() {
     f.remaps = remaps();
     f.variables = VariableSpace{1, 29, 30, 99}; // locals, globals; system from #100 (§6.1)
     f.variables.vacant = false;                 // user variables are 0 at the start
+    f.wordValues = wordValueRules();            // §6.1: integers and 0.001
     f.expansionMarkers = {"%"};                 // every file is a sequence of %-programs
     f.namedUnits = true;
     f.callFrame = LocalFrame::Copy; // L: the callee gets a copy of the caller's locals (§6.7)

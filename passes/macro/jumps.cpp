@@ -14,10 +14,14 @@ bool Expander::jumpTo(Frame& f, const ir::Expr& label, const SourceRange& where)
   if (v->vacant)
     return fail(diag::code::BlockNotFound, where, "GOTO to a vacant block number (§2.5 rule 5)");
   const double n = roundHalfAway(v->number);
-  const bool inRange = n >= 1 && n <= 99999999; // N numbers (nct-macro.md §1.2); no int overflow
+  const Profile& profile = machine_.profile(); // its N range; no int64 overflow
+  const auto first = static_cast<double>(profile.minSequenceNumber),
+             last = static_cast<double>(profile.maxSequenceNumber);
+  const bool inRange = n >= first && n <= last;
   if (!inRange && n > 0)
     return fail(diag::code::BlockNotFound, where,
-                fmt::format("block N{:g} not found: block numbers are 1-99999999", n));
+                fmt::format("block N{:g} not found: block numbers are {}-{}", n,
+                            profile.minSequenceNumber, profile.maxSequenceNumber));
   const std::size_t target =
       inRange ? f.program->find(static_cast<std::int64_t>(n), f.pc + 1) : LoadedProgram::npos;
   if (target == LoadedProgram::npos)

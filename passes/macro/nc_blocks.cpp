@@ -12,11 +12,11 @@ namespace gcx::macro {
 
 namespace {
 
-// A motion block for a modal call (nct-macro.md §5.5 D3): an NC block with an axis word.
-bool movesAxes(const ir::Block& b) {
+// A motion block for a modal call (nct-macro.md §5.5 D3): an NC block with an axis word (one
+// of the dialect's coordinate letters).
+bool movesAxes(const ir::Block& b, std::string_view axisLetters) {
   for (const ir::Word& w : b.words)
-    if (w.address.size() == 1 &&
-        std::string_view("XYZUVWABC").find(w.address[0]) != std::string_view::npos)
+    if (w.address.size() == 1 && axisLetters.find(w.address[0]) != std::string_view::npos)
       return true;
   return false;
 }
@@ -71,6 +71,7 @@ WordOptions Expander::scanRemaps(const ir::Block& b) {
     }
   }
   WordOptions opt;
+  opt.rules = &flow_.wordValues;
   opt.callNumber = call;
   return opt;
 }
@@ -94,11 +95,10 @@ bool Expander::resolveWord(const ir::Word& w, const WordOptions& opt, ir::Block&
   if (w.address == "AX") { // AX[n]=v: the axis by its number in the channel (§2.6)
     auto n = eval_.number(w.axisIndex.front());
     if (!n) return false;
-    static const char* const names[] = {"X", "Y", "Z", "A", "B", "C"};
     const long k = std::lround(*n);
-    if (k < 1 || k > 6)
+    if (k < 1 || k > static_cast<long>(flow_.channelAxes.size()))
       return fail("2018", w.range, fmt::format("wrong physical axis number {}", k));
-    resolved.address = names[k - 1];
+    resolved.address = std::string(1, flow_.channelAxes[static_cast<std::size_t>(k - 1)]);
     resolved.axisIndex.clear();
   }
   if (resolved.kind == ir::ValueKind::Number) { // AX[e]=<literal>
@@ -235,7 +235,8 @@ bool Expander::execute(Frame& f, const ir::Block& b, const ir::Block& flat) {
     }
   }
   // a modal call after each motion block: the most recent visible one (§5.5 D2, D3)
-  if (const ModalCall* m = visibleModalCall(); m && !m->everyBlock && movesAxes(flat)) {
+  if (const ModalCall* m = visibleModalCall();
+      m && !m->everyBlock && movesAxes(flat, flow_.wordValues.coordinateLetters)) {
     const std::size_t index = static_cast<std::size_t>(m - modalCalls_.data());
     return pushFrame(f, m->program, m->frame, m->args, m->times, m->what, b.range, index);
   }

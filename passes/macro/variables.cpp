@@ -127,8 +127,7 @@ std::optional<double> Expander::parameter(int id, std::optional<int> bit, std::o
 }
 
 std::optional<int> Expander::axisNumber(char letter, const SourceRange& where) {
-  static const std::string axes = "XYZABC";
-  const auto pos = axes.find(letter);
+  const auto pos = flow_.channelAxes.find(letter);
   if (pos == std::string::npos) {
     diags_.error(diag::code::ForbiddenAddress, where,
                  fmt::format("no axis {} in this channel", letter));

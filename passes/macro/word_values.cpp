@@ -1,9 +1,7 @@
 #include "passes/macro/word_values.h"
 
-#include <array>
 #include <cmath>
 #include <fmt/format.h>
-#include <limits>
 
 #include "diag/codes.h"
 #include "emit/number.h"
@@ -11,46 +9,6 @@
 namespace gcx::macro {
 
 namespace {
-
-constexpr double kAny = std::numeric_limits<double>::max(); // finite: inf and NaN fail the check
-constexpr double kBig = 99999999;
-
-// nct-macro.md §2.6 rounding with the §1.2 ranges; 0 allowed for M T H D L (§2.6, §12 Q29).
-constexpr std::array<AddressRule, 31> kRules{{
-    {"G", false, Rounding::Tenth, 0, 9999.9},
-    {"M", false, Rounding::Integer, 0, kBig},
-    {"T", false, Rounding::Integer, 0, kBig},
-    {"L", false, Rounding::Integer, 0, kBig},
-    {"H", false, Rounding::Integer, 0, 999},
-    {"D", false, Rounding::Integer, 0, 999},
-    {"N", false, Rounding::Integer, 1, kBig},
-    {"P", true, Rounding::Integer, 1, kBig},
-    {"S", true, Rounding::Integer, 0, kBig},
-    {"X", false, Rounding::Resolution, -kAny, kAny},
-    {"Y", false, Rounding::Resolution, -kAny, kAny},
-    {"Z", false, Rounding::Resolution, -kAny, kAny},
-    {"U", false, Rounding::Resolution, -kAny, kAny},
-    {"V", false, Rounding::Resolution, -kAny, kAny},
-    {"W", false, Rounding::Resolution, -kAny, kAny},
-    {"A", false, Rounding::Resolution, -kAny, kAny},
-    {"B", false, Rounding::Resolution, -kAny, kAny},
-    {"C", false, Rounding::Resolution, -kAny, kAny},
-    {"I", false, Rounding::Resolution, -kAny, kAny},
-    {"J", false, Rounding::Resolution, -kAny, kAny},
-    {"K", false, Rounding::Resolution, -kAny, kAny},
-    {"R", false, Rounding::Resolution, -kAny, kAny},
-    {"E", false, Rounding::Resolution, -kAny, kAny},
-    {",C", false, Rounding::Resolution, -kAny, kAny},
-    {",R", false, Rounding::Resolution, -kAny, kAny},
-    {",A", false, Rounding::Resolution, -kAny, kAny},
-    {"AX", false, Rounding::Resolution, -kAny, kAny},
-    {"F", false, Rounding::None, 0, kAny},
-    {"S", false, Rounding::None, 0, kBig},
-    {"P", false, Rounding::None, -kAny, kAny},
-    {"Q", false, Rounding::None, -kAny, kAny},
-}};
-
-constexpr AddressRule kOther{"", false, Rounding::None, -kAny, kAny};
 
 // Rounds to a multiple of resolution, ties away from zero; 1e-6 rounds as round(v*1e6)/1e6 so
 // X[10/3] gives the double nearest 3.333333.
@@ -68,19 +26,11 @@ bool isReference(ir::ExprKind k) {
 
 } // namespace
 
-const AddressRule& addressRule(std::string_view address, bool callNumber) {
-  const bool call = callNumber && (address == "P" || address == "S");
-  for (const AddressRule& r : kRules)
-    if (r.address == address && r.callNumber == call) return r;
-  // extended axis names (XDE, Z1: nct.md §1.2 rule 5) are coordinates
-  if (!address.empty() && std::string_view("XYZUVWABC").find(address[0]) != std::string_view::npos)
-    return addressRule("X");
-  return kOther;
-}
-
 std::optional<double> addressValue(double v, std::string_view address, const SourceRange& where,
                                    diag::Engine& diags, const WordOptions& opt) {
-  const AddressRule& rule = addressRule(address, opt.callNumber);
+  static const WordValueRules none;
+  const WordValueRules& rules = opt.rules ? *opt.rules : none;
+  const AddressRule& rule = rules.find(address, opt.callNumber);
   double r = v;
   switch (rule.rounding) {
   case Rounding::Integer:
@@ -90,7 +40,7 @@ std::optional<double> addressValue(double v, std::string_view address, const Sou
     r = roundTo(v, 0.1);
     break;
   case Rounding::Resolution:
-    r = roundTo(v, opt.resolution);
+    r = roundTo(v, opt.resolution.value_or(rules.resolution));
     break;
   case Rounding::None:
     break;
@@ -105,8 +55,8 @@ std::optional<double> addressValue(double v, std::string_view address, const Sou
     message = fmt::format("address {} takes no negative value: {}{}", address, address, shown);
   else
     message =
-        fmt::format("{}{} is out of range: {} takes {}-{} (nct-macro.md §2.6)", address, shown,
-                    address, emit::formatNumber(rule.min), emit::formatNumber(rule.max));
+        fmt::format("{}{} is out of range: {} takes {}-{} ({})", address, shown, address,
+                    emit::formatNumber(rule.min), emit::formatNumber(rule.max), rules.reference);
   diags.error(diag::code::AddressValueRange, where, std::move(message));
   return std::nullopt;
 }

@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "dialect/word_value_rules.h"
+
 namespace gcx {
 
 namespace ir {
@@ -185,6 +187,10 @@ struct ControlFlow {
   RemapTable remaps;
   VariableSpace variables;
   bool hasVariables = true; // false: the language has no variables (FMS-3000)
+  /// Rounding and range of a value an expression gives to an address (`X#1`, `G#29`).
+  WordValueRules wordValues;
+  /// The channel's axes by number, 1 first: AX[n] and the axis-number functions (NCT "XYZABC").
+  std::string channelAxes;
   /// Words that mark a file as needing the expansion pass (calls, loops, jumps, prints).
   std::vector<std::string> expansionMarkers;
   /// A file is a sequence of program units `%name ... %` (WL4, wl4.md §1.2): the library

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "diag/codes.h"
+#include "dialects/nct/word_value_rules.h"
 #include "emit/number.h"
 #include "passes/macro/word_values.h"
 #include "support/test_support.h"
@@ -15,6 +16,16 @@ namespace {
 
 using macro::Value;
 using macro::WordResult;
+
+// NCT's address table (the dialect's ControlFlow::wordValues), the rules these sections test.
+const WordValueRules& nctRules() {
+  static const WordValueRules rules = nct::wordValueRules();
+  return rules;
+}
+macro::WordOptions withNct(macro::WordOptions opt) {
+  if (!opt.rules) opt.rules = &nctRules();
+  return opt;
+}
 
 struct Store : macro::VariableAccess {
   std::map<int, Value> vars;
@@ -56,7 +67,7 @@ struct Exec {
         return;
       std::string line;
       for (const ir::Word& w : b.words) {
-        const macro::WordValue r = macro::wordValue(w, ev, opt);
+        const macro::WordValue r = macro::wordValue(w, ev, withNct(opt));
         if (r.result == WordResult::Error) return;
         if (r.result == WordResult::Dropped) continue;
         line += (line.empty() ? "" : " ") + w.address + (w.incremental ? "I" : "") +
@@ -84,7 +95,7 @@ macro::WordValue word(const std::string& setup, const std::string& text,
   Store store;
   macro::Evaluator ev(store, out ? *out : diags);
   for (const ir::Block& b : p.blocks) {
-    if (b.stmts.empty()) return macro::wordValue(b.words.at(0), ev, opt);
+    if (b.stmts.empty()) return macro::wordValue(b.words.at(0), ev, withNct(opt));
     store.vars[*ev.variableNumber(b.stmts.front().target)] = *ev.value(b.stmts.front().value);
   }
   return {};
@@ -141,8 +152,8 @@ TEST(MacroSpec_2_6, RoundingPerAddress) {
   EXPECT_EQ(word("", "Q[1/3]").number, 1.0 / 3);
   EXPECT_EQ(word("", "P[1/3]").number, 1.0 / 3);
   EXPECT_EQ(word("", "S[1/3]").number, 1.0 / 3);
-  EXPECT_EQ(word("#1=11.5\n", "P#1", {.callNumber = true}).number, 12);
-  EXPECT_EQ(word("#1=11.5\n", "S#1", {.callNumber = true}).number, 12);
+  EXPECT_EQ(word("#1=11.5\n", "P#1", {.resolution = {}, .callNumber = true}).number, 12);
+  EXPECT_EQ(word("#1=11.5\n", "S#1", {.resolution = {}, .callNumber = true}).number, 12);
   EXPECT_EQ(word("#1=-2.5\n", "X#1").number, -2.5);
   EXPECT_EQ(word("#1=-0.25\n", "X#1", {.resolution = 0.5}).number, -0.5); // tie away from 0
   EXPECT_EQ(word("#1=0.25\n", "X#1", {.resolution = 0.5}).number, 0.5);
@@ -151,15 +162,15 @@ TEST(MacroSpec_2_6, RoundingPerAddress) {
 }
 
 TEST(MacroSpec_2_6, AddressTableRows) {
-  using macro::Rounding;
-  EXPECT_EQ(macro::addressRule("M").rounding, Rounding::Integer);
-  EXPECT_EQ(macro::addressRule("G").rounding, Rounding::Tenth);
-  EXPECT_EQ(macro::addressRule("E").rounding, Rounding::Resolution);
-  EXPECT_EQ(macro::addressRule("P").rounding, Rounding::None);
-  EXPECT_EQ(macro::addressRule("P", true).rounding, Rounding::Integer);
-  EXPECT_EQ(macro::addressRule("F", true).rounding, Rounding::None);
-  EXPECT_EQ(macro::addressRule("XDE").rounding, Rounding::Resolution);
-  EXPECT_EQ(macro::addressRule("H").max, 999);
+  const WordValueRules& t = nctRules();
+  EXPECT_EQ(t.find("M", false).rounding, Rounding::Integer);
+  EXPECT_EQ(t.find("G", false).rounding, Rounding::Tenth);
+  EXPECT_EQ(t.find("E", false).rounding, Rounding::Resolution);
+  EXPECT_EQ(t.find("P", false).rounding, Rounding::None);
+  EXPECT_EQ(t.find("P", true).rounding, Rounding::Integer);
+  EXPECT_EQ(t.find("F", true).rounding, Rounding::None);
+  EXPECT_EQ(t.find("XDE", false).rounding, Rounding::Resolution);
+  EXPECT_EQ(t.find("H", false).max, 999);
 }
 
 TEST(MacroSpec_2_6, RangeCheckAfterRounding) {
@@ -171,7 +182,7 @@ TEST(MacroSpec_2_6, RangeCheckAfterRounding) {
   for (const auto& [setup, text] : bad) {
     diag::Engine diags;
     const bool call = text[0] == 'P';
-    EXPECT_EQ(word(setup, text, {.callNumber = call}, &diags).result, WordResult::Error) << text;
+    EXPECT_EQ(word(setup, text, {.resolution = {}, .callNumber = call}, &diags).result, WordResult::Error) << text;
     ASSERT_EQ(diags.all().size(), 1u) << text;
     EXPECT_EQ(diags.all()[0].code, std::string("NCTX04")) << text;
   }
@@ -186,8 +197,8 @@ TEST(MacroSpec_2_6, RangeCheckAfterRounding) {
 
 TEST(MacroSpec_2_6, SequenceNumbersAreWholeFrom1) { // N as a G65 argument or jump target
   diag::Engine diags;
-  EXPECT_EQ(macro::addressValue(2.5, "N", {}, diags), 3);
-  EXPECT_EQ(macro::addressValue(0.4, "N", {}, diags), std::nullopt);
+  EXPECT_EQ(macro::addressValue(2.5, "N", {}, diags, withNct({})), 3);
+  EXPECT_EQ(macro::addressValue(0.4, "N", {}, diags, withNct({})), std::nullopt);
   ASSERT_EQ(diags.all().size(), 1u);
   EXPECT_EQ(diags.all()[0].code, std::string("NCTX04"));
 }

@@ -134,6 +134,23 @@ TEST(Rs274Text, SetupJson) {
   EXPECT_FALSE(parseSetupJson("{", s, err));
 }
 
+// The dialect sections of a shared setup are gcx's (docs/setup.md); the rapid rate is kept for
+// the times equiv reports.
+TEST(Rs274Text, SetupJsonSkipsDialectSectionsAndKeepsTheRapidRate) {
+  OracleSetup s;
+  std::string err;
+  ASSERT_TRUE(parseSetupJson(
+      R"({"nct": {"parameters": {"N1339": 1}}, "wl4": {"variables": {"#31": 2}},
+          "rapid_rate": 5000})",
+      s, err))
+      << err;
+  EXPECT_EQ(s.rapidRate, 5000);
+  EXPECT_FALSE(parseSetupJson(R"({"nct": {"feed": 1}})", s, err));
+  EXPECT_EQ(err, "setup JSON: unknown key 'nct'");
+  EXPECT_FALSE(parseSetupJson(R"({"rapid_rate": 0})", s, err));
+  EXPECT_EQ(err, "setup JSON: rapid_rate must be a number above 0");
+}
+
 TEST(Rs274Run, LinesArcsHelixDwellWithSourceLines) {
   SKIP_WITHOUT_RS274();
   const std::string program = "(oracle run 1: lines, arcs in three planes, helix, dwell)\n"

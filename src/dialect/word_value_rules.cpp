@@ -1,0 +1,16 @@
+#include "dialect/word_value_rules.h"
+
+namespace gcx {
+
+const AddressRule& WordValueRules::find(std::string_view address, bool callNumber) const {
+  static constexpr AddressRule other{"", false, Rounding::None, -anyValue, anyValue};
+  const bool call = callNumber && (address == "P" || address == "S");
+  for (const AddressRule& r : rows)
+    if (r.address == address && r.callNumber == call) return r;
+  if (!address.empty() && !coordinateRow.empty() && address != coordinateRow &&
+      coordinateLetters.find(address[0]) != std::string::npos)
+    return find(coordinateRow, false);
+  return other;
+}
+
+} // namespace gcx
