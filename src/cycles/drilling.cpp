@@ -76,10 +76,10 @@ private:
 };
 
 bool rigidTap(DrillCycle c) {
-  return c == DrillCycle::G84_2 || c == DrillCycle::G84_3;
+  return c == DrillCycle::RigidTapRight || c == DrillCycle::RigidTapLeft;
 }
 bool pecking(DrillCycle c) {
-  return c == DrillCycle::G73 || c == DrillCycle::G83;
+  return c == DrillCycle::HighSpeedPeck || c == DrillCycle::PeckDrill;
 }
 
 // §3.2: n = max(1, ceil(D/Q - 1e-9)), L_k = r + s*min(k*Q, D), never accumulated (§1.2 rule 3).
@@ -121,7 +121,8 @@ void deepPecks(Ops& o, const Hole& h, double c) { // G83 (000:9873-9883)
 // G84.2 / G84.3 (000:9986-10100, §3.9): op 4, the tap into the hole (pecks with Q), dwell,
 // the reverse tap to R, then G98 rapid to the initial level.
 void rigidTapHole(Ops& o, const Hole& h, const DrillRequest& req, const DrillConfig& cfg) {
-  const int fwd = req.cycle == DrillCycle::G84_2 ? +1 : -1; // CW for G84.2 (000:10000-10003)
+  const int fwd =
+      req.cycle == DrillCycle::RigidTapRight ? +1 : -1; // CW for G84.2 (000:10000-10003)
   const double speed = req.spindleSpeed;
   // the retract override applies only with EOE=1: I, else the tapExtraction setting
   // (000:10012-10020, 10072-10080)
@@ -195,25 +196,25 @@ void standardHole(Ops& o, const Hole& h, const DrillRequest& req, const DrillCon
   auto none = [] {};
   auto spindleCW = [&] { o.op(OpKind::SpindleCW); };
   switch (req.cycle) {
-  case DrillCycle::G73: {
+  case DrillCycle::HighSpeedPeck: {
     const double d = req.vars.e ? req.vars.e->value : cfg.returnG73; // E, else the setting
     highSpeedPecks(o, h, d / h.scale);
     return rapidReturn(o, h, g99, none);
   }
-  case DrillCycle::G83: {
+  case DrillCycle::PeckDrill: {
     const double c = req.vars.e ? req.vars.e->value : cfg.clearanceG83; // E, else the setting
     deepPecks(o, h, c / h.scale);
     return rapidReturn(o, h, g99, none);
   }
-  case DrillCycle::G81:
-  case DrillCycle::G82:
+  case DrillCycle::Drill:
+  case DrillCycle::DrillDwell:
     o.feedLevel(h.z, h.feed);
     o.step(6);
-    if (req.cycle == DrillCycle::G82) o.dwell(h.dwell);
+    if (req.cycle == DrillCycle::DrillDwell) o.dwell(h.dwell);
     return rapidReturn(o, h, g99, none);
-  case DrillCycle::G74:
-  case DrillCycle::G84: { // floating-holder tapping (000:9729-9743, 9910-9924)
-    const bool left = req.cycle == DrillCycle::G74;
+  case DrillCycle::LeftTapFloating:
+  case DrillCycle::RightTapFloating: { // floating-holder tapping (000:9729-9743, 9910-9924)
+    const bool left = req.cycle == DrillCycle::LeftTapFloating;
     o.op(OpKind::OverrideLock);
     o.feedLevel(h.z, h.feed);
     o.step(6);
@@ -226,18 +227,18 @@ void standardHole(Ops& o, const Hole& h, const DrillRequest& req, const DrillCon
     o.op(OpKind::OverrideRestore);
     break;
   }
-  case DrillCycle::G85:
-  case DrillCycle::G89: { // feed retract at F*I/100 (000:10124-10133, 10308-10318)
+  case DrillCycle::BoreFeedOut:
+  case DrillCycle::BoreDwellFeedOut: { // feed retract at F*I/100 (000:10124-10133, 10308-10318)
     const double percent =
         req.vars.overridePercent ? req.vars.overridePercent->value : cfg.extractionG85G89;
     o.feedLevel(h.z, h.feed);
     o.step(6);
-    if (req.cycle == DrillCycle::G89) o.dwell(h.dwell);
+    if (req.cycle == DrillCycle::BoreDwellFeedOut) o.dwell(h.dwell);
     o.step(7);
     o.feedLevel(h.r, h.feed * percent / 100);
     break;
   }
-  case DrillCycle::G76: // fine boring (000:9763-9788)
+  case DrillCycle::FineBoring: // fine boring (000:9763-9788)
     o.feedLevel(h.z, h.feed);
     o.step(6);
     o.dwell(h.dwell);
@@ -247,17 +248,17 @@ void standardHole(Ops& o, const Hole& h, const DrillRequest& req, const DrillCon
       o.rapid(o.at() - h.shift);
       o.op(OpKind::SpindleCW);
     });
-  case DrillCycle::G86: // spindle stop, rapid retract (000:10150-10160)
-  case DrillCycle::G87: // variant A, ORI=0 (000:10180-10200)
-  case DrillCycle::G88: // dwell, manual intervention (000:10265-10289)
+  case DrillCycle::BoreSpindleStop: // spindle stop, rapid retract (000:10150-10160)
+  case DrillCycle::BackBore:        // variant A, ORI=0 (000:10180-10200)
+  case DrillCycle::BoreDwellManual: // dwell, manual intervention (000:10265-10289)
     o.feedLevel(h.z, h.feed);
     o.step(6);
-    if (req.cycle == DrillCycle::G88) o.dwell(h.dwell);
+    if (req.cycle == DrillCycle::BoreDwellManual) o.dwell(h.dwell);
     o.op(OpKind::SpindleStop);
-    if (req.cycle != DrillCycle::G86) o.op(OpKind::ProgramStop);
+    if (req.cycle != DrillCycle::BoreSpindleStop) o.op(OpKind::ProgramStop);
     return rapidReturn(o, h, g99, spindleCW);
-  case DrillCycle::G84_2:
-  case DrillCycle::G84_3:
+  case DrillCycle::RigidTapRight:
+  case DrillCycle::RigidTapLeft:
     return; // rigidTapHole
   }
   if (!g99) { // op 9 of the cycles whose op 7 always returns to R
@@ -273,13 +274,13 @@ const SourceRange& wordRange(const std::optional<DrillWord>& w, const SourceRang
 // The spindle direction the cycle needs before it starts (§3.1), 0 if none.
 int neededDirection(DrillCycle c) {
   switch (c) {
-  case DrillCycle::G74:
-    return -1;          // 000:9713-9714
-  case DrillCycle::G76: // 000:9760
-  case DrillCycle::G84: // 000:9895-9896
-  case DrillCycle::G86: // 000:10147
-  case DrillCycle::G87: // 000:10177, 10214
-  case DrillCycle::G88: // 000:10262
+  case DrillCycle::LeftTapFloating:
+    return -1;                       // 000:9713-9714
+  case DrillCycle::FineBoring:       // 000:9760
+  case DrillCycle::RightTapFloating: // 000:9895-9896
+  case DrillCycle::BoreSpindleStop:  // 000:10147
+  case DrillCycle::BackBore:         // 000:10177, 10214
+  case DrillCycle::BoreDwellManual:  // 000:10262
     return +1;
   default:
     return 0;
@@ -289,7 +290,7 @@ int neededDirection(DrillCycle c) {
 // §7 checks; fills h. False after reporting an error.
 bool resolve(const DrillRequest& req, const SourceRange& where, const DrillConfig& cfg,
              diag::Engine& diags, Hole& h) {
-  const char* name = cycleName(req.cycle);
+  const std::string_view name = req.label;
   const DrillVariables& v = req.vars;
   if (req.cylindrical) {
     diags.error(diag::code::CycleCylindrical, where,
@@ -298,7 +299,7 @@ bool resolve(const DrillRequest& req, const SourceRange& where, const DrillConfi
                             name));
     return false;
   }
-  if (req.cycle == DrillCycle::G76 && !cfg.orient) {
+  if (req.cycle == DrillCycle::FineBoring && !cfg.orient) {
     diags.error(diag::code::CycleNoOrientation, where,
                 fmt::format("G76, G87: the spindle cannot be oriented ({}=0) (000:9746-9749)",
                             cfg.orientLabel));
@@ -331,7 +332,8 @@ bool resolve(const DrillRequest& req, const SourceRange& where, const DrillConfi
                 fmt::format("{} without a feed rate F (000:9602-9604)", name));
     return false;
   }
-  const bool overrideI = req.cycle == DrillCycle::G85 || req.cycle == DrillCycle::G89 ||
+  const bool overrideI = req.cycle == DrillCycle::BoreFeedOut ||
+                         req.cycle == DrillCycle::BoreDwellFeedOut ||
                          (rigidTap(req.cycle) && cfg.extractionEnabled);
   if (overrideI && v.overridePercent && v.overridePercent->value <= 0) {
     diags.error(diag::code::DataOutOfRange, wordRange(v.overridePercent, where),
@@ -344,7 +346,7 @@ bool resolve(const DrillRequest& req, const SourceRange& where, const DrillConfi
   h.s = h.z > h.r ? +1 : -1;
   // The rapid to R must not pass the bottom; back boring is the one cycle whose R lies beyond
   // it (000:10246-10248). The manual gives no alarm: rs274 refuses the same ("R less than Z").
-  const bool backBoring = req.cycle == DrillCycle::G87 && cfg.orient;
+  const bool backBoring = req.cycle == DrillCycle::BackBore && cfg.orient;
   const bool rBeyondBottom = (h.z - h.ini) * (h.r - h.z) > 0;
   if (rBeyondBottom != backBoring) {
     diags.error(diag::code::CycleRBeyondBottom, wordRange(v.r, where),
@@ -373,12 +375,11 @@ void warnings(const DrillRequest& req, const SourceRange& where, diag::Engine& d
   if (need != 0 && req.spindleDirection && *req.spindleDirection != need)
     diags.warning(diag::code::CycleSpindleDirection, where,
                   fmt::format("{} expects the spindle turning {} before the cycle (§3.1)",
-                              cycleName(req.cycle),
-                              need > 0 ? "clockwise (M3)" : "counter-clockwise (M4)"));
+                              req.label, need > 0 ? "clockwise (M3)" : "counter-clockwise (M4)"));
   if (req.radiusCompensation)
-    diags.warning(diag::code::CycleRadiusComp, where,
-                  fmt::format("{} with G41/G42 active: hole positions are not compensated",
-                              cycleName(req.cycle)));
+    diags.warning(
+        diag::code::CycleRadiusComp, where,
+        fmt::format("{} with G41/G42 active: hole positions are not compensated", req.label));
 }
 
 } // namespace
@@ -398,7 +399,7 @@ std::optional<DrillResult> expandHole(const DrillRequest& req, const SourceRange
   o.rapid(hole);
   DrillResult res;
   res.auxAt = o.list().size();
-  if (req.cycle == DrillCycle::G87 && config.orient) {
+  if (req.cycle == DrillCycle::BackBore && config.orient) {
     backBoring(o, h);
   } else if (rigidTap(req.cycle)) {
     o.step(3);

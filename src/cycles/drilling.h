@@ -33,7 +33,8 @@
 namespace gcx::cycles {
 
 struct DrillRequest {
-  DrillCycle cycle = DrillCycle::G81;
+  DrillCycle cycle = DrillCycle::Drill;
+  std::string_view label; // the code as written ("G81"), for messages (DrillModal::label)
   DrillReturn ret = DrillReturn::Initial;
   /// G17/G18/G19: positioning plane and drilling axis Z/Y/X (§2.2). When a parallel axis
   /// drills (W in G17, 000:9496-9501), pass its value in the slot of Z and map the ops back.

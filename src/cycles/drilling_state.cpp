@@ -10,9 +10,6 @@ namespace gcx::cycles {
 namespace {
 
 // cycles.md §2.1, in the order of DrillCycle
-constexpr const char* kNames[] = {"G73",   "G74",   "G76", "G81", "G82", "G83", "G84",
-                                  "G84.2", "G84.3", "G85", "G86", "G87", "G88", "G89"};
-
 constexpr double kMaxRepetitions = 99999999; // 000:9616
 
 bool negative(const std::optional<DrillWord>& w, char address, diag::Engine& diags,
@@ -24,10 +21,6 @@ bool negative(const std::optional<DrillWord>& w, char address, diag::Engine& dia
 }
 
 } // namespace
-
-const char* cycleName(DrillCycle c) {
-  return kNames[static_cast<int>(c)];
-}
 
 std::optional<long> updateModal(DrillModal& m, const DrillWords& w, diag::Engine& diags) {
   if (!m.cycle && !w.code) return 0; // not in cycle mode: Q, E, L... mean something else
@@ -52,7 +45,7 @@ std::optional<long> updateModal(DrillModal& m, const DrillWords& w, diag::Engine
     m.initial = w.axisPosition;
     m.vars.r.reset();
   }
-  if (w.code) m.cycle = w.code;
+  if (w.code) m.cycle = w.code, m.label = w.label;
   DrillVariables& v = m.vars;
   if (in.z) v.z = in.z;
   if (in.r) v.r = in.r; // stored even without a hole (§9 Q-4)
@@ -70,7 +63,7 @@ std::optional<long> updateModal(DrillModal& m, const DrillWords& w, diag::Engine
                             !v.z && !v.r ? "the drilling-axis word and R"
                             : !v.z       ? "the drilling-axis word"
                                          : "R",
-                            cycleName(*m.cycle)));
+                            m.label));
     return std::nullopt;
   }
   return holes; // L0: the data are stored, nothing moves (000:9617)

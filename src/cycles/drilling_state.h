@@ -14,24 +14,21 @@ namespace gcx::cycles {
 /// The drilling cycles of group 09 (cycles.md §2.1). G83.1/G84.1/G86.1 (the CSM setting) are the
 /// same cycles as G73/G74/G76: a dialect binds its codes to these (GCodeSpec::arg).
 enum class DrillCycle : unsigned char {
-  G73,   // high-speed peck drilling (000:9670)
-  G74,   // left-hand tapping, floating holder (000:9702)
-  G76,   // fine boring with oriented retract (000:9744)
-  G81,   // drilling, rapid retract (000:9798)
-  G82,   // drilling with dwell (000:9829)
-  G83,   // peck drilling, retract to R (000:9851)
-  G84,   // right-hand tapping, floating holder (000:9884)
-  G84_2, // rigid tapping, right hand (000:9925)
-  G84_3, // rigid tapping, left hand (000:9925)
-  G85,   // boring, feed retract (000:10107)
-  G86,   // boring, spindle stop, rapid retract (000:10138)
-  G87,   // A: manual intervention (ORI=0); B: back boring (ORI=1) (000:10161)
-  G88,   // dwell, manual intervention (000:10253)
-  G89,   // boring with dwell, feed retract (000:10291)
+  HighSpeedPeck,    // high-speed peck drilling (000:9670)
+  LeftTapFloating,  // left-hand tapping, floating holder (000:9702)
+  FineBoring,       // fine boring with oriented retract (000:9744)
+  Drill,            // drilling, rapid retract (000:9798)
+  DrillDwell,       // drilling with dwell (000:9829)
+  PeckDrill,        // peck drilling, retract to R (000:9851)
+  RightTapFloating, // right-hand tapping, floating holder (000:9884)
+  RigidTapRight,    // rigid tapping, right hand (000:9925)
+  RigidTapLeft,     // rigid tapping, left hand (000:9925)
+  BoreFeedOut,      // boring, feed retract (000:10107)
+  BoreSpindleStop,  // boring, spindle stop, rapid retract (000:10138)
+  BackBore,         // A: manual intervention (ORI=0); B: back boring (ORI=1) (000:10161)
+  BoreDwellManual,  // dwell, manual intervention (000:10253)
+  BoreDwellFeedOut, // boring with dwell, feed retract (000:10291)
 };
-
-/// The G code as written: "G81", "G84.2".
-const char* cycleName(DrillCycle c);
 
 /// Group 10: where the tool returns after a hole (§2.3). G98 is the default and is set again at
 /// power-on, reset and when cycle mode is cancelled (000:9456-9459).
@@ -67,6 +64,7 @@ struct DrillVariables {
 /// group-1 code (G00 G01 G02 G03 G33) and at reset (000:9479-9481, 9792-9793).
 struct DrillModal {
   std::optional<DrillCycle> cycle; // nullopt: G80
+  std::string label;               // its code as the program wrote it ("G81"), for messages
   /// The drilling axis the initial level belongs to, in the caller's numbering (suggested:
   /// 0-2 X Y Z, 3-5 U V W as parallel axes). A change of drilling axis registers a new
   /// initial level and needs R in the same block (000:9494-9505).
@@ -78,6 +76,7 @@ struct DrillModal {
 /// The cycle words of one block executed in cycle mode (or of the block that enters it).
 struct DrillWords {
   std::optional<DrillCycle> code; // a drilling-cycle G code in this block
+  std::string label;              // that code as written ("G84.2")
   /// §2.5: the block programs a plane axis, the drilling axis or another non-drilling axis q
   /// (000:10327-10332). A Z word (vars.z) counts as one by itself. The caller decides what
   /// counts (a G04 block never does: its P is the dwell's, 000:10334-10336).

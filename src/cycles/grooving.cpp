@@ -38,7 +38,7 @@ Run run(double a, double b, double step) {
 
 TurningOps expandGrooving(const TurningRequest& req, const TurningModal& m, const TurningWords& w,
                           diag::Engine& diags) {
-  const bool face = w.cycle == TurningCycle::G74; // G74.7 pecks along P1, G75.7 along P2
+  const bool face = w.cycle == TurningCycle::FaceGrooving; // G74.7 pecks along P1, G75.7 along P2
   const int peckAxis = face ? 0 : 1, stepAxis = 1 - peckAxis;
   const char peckWord = face ? 'Q' : 'P', stepWord = face ? 'P' : 'Q'; // Q = Δk, P = Δi
   if (!checkFeed(req.feed, w, false, diags)) return std::nullopt;

@@ -22,7 +22,7 @@ std::optional<KeptContours::Cycle> KeptContours::cycleOf(const ir::Block& b) con
     if (!w.is('G') || !w.isLiteral()) continue;
     const GCodeSpec* g = profile_.gcode(w.number);
     if (!g || g->action != GAction::TurningCycle) continue;
-    if (static_cast<TurningCycle>(g->arg) <= TurningCycle::G73) // the profile's binding
+    if (static_cast<TurningCycle>(g->arg) <= TurningCycle::PatternRepeat) // the profile's binding
       return Cycle{static_cast<std::int64_t>(p->number), static_cast<std::int64_t>(q->number),
                    w.range};
   }

@@ -50,7 +50,7 @@ void contourPass(TurningPath& path, const Profile& c, double feed) {
 
 TurningOps expandStockRemoval(const TurningRequest& req, const TurningModal& m,
                               const TurningWords& w, diag::Engine& diags) {
-  const char* name = turningCycleName(w.cycle);
+  const std::string& name = w.label;
   if (!m.roughDepth) {
     diags.error(diag::code::CycleParam, w.range,
                 fmt::format("{}: no depth of cut: program `{} <depth> R<e>` first "
@@ -61,8 +61,8 @@ TurningOps expandStockRemoval(const TurningRequest& req, const TurningModal& m,
   if (!checkFeed(req.feed, w, false, diags)) return std::nullopt;
   const auto profile = makeProfile(req.contour, req.plane, w.range, diags);
   if (!profile) return std::nullopt;
-  const bool facing = w.cycle == TurningCycle::G72; // §4.9: P1 and P2 swap roles
-  const auto frame = checkTypeOne(*profile, facing ? 0 : 1, name, diags);
+  const bool facing = w.cycle == TurningCycle::RoughFacing; // §4.9: P1 and P2 swap roles
+  const auto frame = checkTypeOne(*profile, facing ? 0 : 1, name.c_str(), diags);
   if (!frame) return std::nullopt;
 
   const Profile c = shifted(*profile, allowance(w)); // §4.8 step 1: C'

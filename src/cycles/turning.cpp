@@ -59,46 +59,43 @@ Vec2 allowance(const TurningWords& w) {
 bool checkFeed(double f, const TurningWords& w, bool lead, diag::Engine& diags) {
   if (f > 0) return true;
   if (lead)
-    diags.error(
-        diag::code::ThreadSpecification, w.at('F'),
-        fmt::format("{}: thread lead F must be > 0 (000:1668-1673)", turningCycleName(w.cycle)));
+    diags.error(diag::code::ThreadSpecification, w.at('F'),
+                fmt::format("{}: thread lead F must be > 0 (000:1668-1673)", w.label));
   else
-    diags.error(diag::code::MissingData, w.at('F'),
-                fmt::format("{}: no feed F", turningCycleName(w.cycle)));
+    diags.error(diag::code::MissingData, w.at('F'), fmt::format("{}: no feed F", w.label));
   return false;
 }
 
 void paramError(const TurningWords& w, char c, const std::string& why, diag::Engine& diags) {
-  diags.error(diag::code::CycleParam, w.at(c),
-              fmt::format("{}: {} (cycles.md §7)", turningCycleName(w.cycle), why));
+  diags.error(diag::code::CycleParam, w.at(c), fmt::format("{}: {} (cycles.md §7)", w.label, why));
 }
 
 std::optional<std::vector<CycleOp>> expandTurning(const TurningRequest& req,
                                                   const TurningModal& modal,
                                                   const TurningWords& words, diag::Engine& diags) {
   switch (words.cycle) {
-  case TurningCycle::G70: { // §4.11: the blocks ran; RAPID back to the start point
+  case TurningCycle::Finishing: { // §4.11: the blocks ran; RAPID back to the start point
     TurningPath path(req.end, req.plane);
     path.rapid(path.lathe(req.start));
     return std::move(path.ops());
   }
-  case TurningCycle::G71:
-  case TurningCycle::G72:
+  case TurningCycle::RoughTurning:
+  case TurningCycle::RoughFacing:
     return expandStockRemoval(req, modal, words, diags);
-  case TurningCycle::G73:
+  case TurningCycle::PatternRepeat:
     return expandPatternRepeat(req, modal, words, diags);
-  case TurningCycle::G74:
-  case TurningCycle::G75:
+  case TurningCycle::FaceGrooving:
+  case TurningCycle::Grooving:
     return expandGrooving(req, modal, words, diags);
-  case TurningCycle::G76:
+  case TurningCycle::MultipleThread:
     return expandThreading(req, modal, words, diags);
-  case TurningCycle::G77:
-  case TurningCycle::G78: {
-    const bool thread = words.cycle == TurningCycle::G78;
+  case TurningCycle::TurningPass:
+  case TurningCycle::ThreadPass: {
+    const bool thread = words.cycle == TurningCycle::ThreadPass;
     if (!checkFeed(req.feed, words, thread, diags)) return std::nullopt;
     return turningCycle(req, thread);
   }
-  case TurningCycle::G79:
+  case TurningCycle::FacingPass:
     if (!checkFeed(req.feed, words, false, diags)) return std::nullopt;
     return facingCycle(req);
   }

@@ -12,23 +12,20 @@ namespace gcx::cycles {
 
 namespace {
 
-constexpr const char* kNames[] = {"G70.7", "G71.7", "G72.7", "G73.7", "G74.7",
-                                  "G75.7", "G76.7", "G77.7", "G78.7", "G79.7"};
-
 bool isInteger(double v) {
   return std::abs(v - std::round(v)) < 1e-9;
 }
 
 bool fail(diag::Engine& diags, const TurningWords& w, char c, const std::string& why) {
   diags.error(diag::code::CycleParam, w.at(c),
-              fmt::format("{}: {} ({})", turningCycleName(w.cycle), why, "cycles.md §7"));
+              fmt::format("{}: {} ({})", w.label, why, "cycles.md §7"));
   return false;
 }
 
 // §4.8/§4.9: `G7x.7 <depth letter>Δd R e`; G71 takes lathe U', G72 lathe W' (§4.2).
 bool storeRough(TurningModal& m, const TurningWords& w, diag::Engine& diags) {
   const LatheAxes ax = latheAxes(w.plane);
-  const char depth = w.cycle == TurningCycle::G71 ? ax.u : ax.w;
+  const char depth = w.cycle == TurningCycle::RoughTurning ? ax.u : ax.w;
   if (const auto& d = w[depth]) {
     if (d->value <= 0) return fail(diags, w, depth, "the depth of cut must be > 0");
     m.roughDepth = d->value; // always radius (000:2506-2509)
@@ -94,10 +91,6 @@ bool hasAxisWord(const TurningWords& w) {
 
 } // namespace
 
-const char* turningCycleName(TurningCycle c) {
-  return kNames[static_cast<int>(c)];
-}
-
 LatheAxes latheAxes(motion::Plane plane) {
   const motion::PlaneAxes a = motion::axesOf(plane);
   constexpr char abs[] = "XYZ", inc[] = "UVW";
@@ -107,24 +100,24 @@ LatheAxes latheAxes(motion::Plane plane) {
 TurningBlock updateModal(TurningModal& m, const TurningWords& w, diag::Engine& diags) {
   bool ok = true;
   switch (w.cycle) {
-  case TurningCycle::G71:
-  case TurningCycle::G72:
-  case TurningCycle::G73:
+  case TurningCycle::RoughTurning:
+  case TurningCycle::RoughFacing:
+  case TurningCycle::PatternRepeat:
     if (w['P'] && w['Q']) return TurningBlock::Run;
     if (w['P'] || w['Q']) {
       diags.error(diag::code::CyclePQNotFound, w.range,
-                  fmt::format("{} needs both P (ns) and Q (nf) (cycles.md §4.7)",
-                              turningCycleName(w.cycle)));
+                  fmt::format("{} needs both P (ns) and Q (nf) (cycles.md §4.7)", w.label));
       return TurningBlock::Error;
     }
-    ok = w.cycle == TurningCycle::G73 ? storeRepeat(m, w, diags) : storeRough(m, w, diags);
+    ok =
+        w.cycle == TurningCycle::PatternRepeat ? storeRepeat(m, w, diags) : storeRough(m, w, diags);
     break;
-  case TurningCycle::G74:
-  case TurningCycle::G75:
+  case TurningCycle::FaceGrooving:
+  case TurningCycle::Grooving:
     if (hasAxisWord(w)) return TurningBlock::Run;
     ok = storeGroove(m, w, diags);
     break;
-  case TurningCycle::G76:
+  case TurningCycle::MultipleThread:
     if (hasAxisWord(w)) return TurningBlock::Run;
     ok = storeThread(m, w, diags);
     break;

@@ -5,6 +5,7 @@
 #pragma once
 #include <array>
 #include <optional>
+#include <string>
 
 #include "diag/diagnostic.h"
 #include "ir/source.h"
@@ -14,20 +15,17 @@ namespace gcx::cycles {
 
 /// The turning cycles (§4.1). G70.7-G76.7 are one-shot (group 0), G77.7-G79.7 modal (group 1).
 enum class TurningCycle : unsigned char {
-  G70, // finishing: the interpreter re-executes ns..nf (§4.11)
-  G71, // stock removal in turning (§4.8)
-  G72, // stock removal in facing (§4.9)
-  G73, // pattern repeating (§4.10)
-  G74, // face grooving / peck drilling (§4.12)
-  G75, // grooving (§4.12)
-  G76, // multiple threading (§4.13)
-  G77, // turning cycle (§4.4)
-  G78, // simple thread cycle (§4.5)
-  G79, // facing cycle (§4.6)
+  Finishing,      // finishing: the interpreter re-executes ns..nf (§4.11)
+  RoughTurning,   // stock removal in turning (§4.8)
+  RoughFacing,    // stock removal in facing (§4.9)
+  PatternRepeat,  // pattern repeating (§4.10)
+  FaceGrooving,   // face grooving / peck drilling (§4.12)
+  Grooving,       // grooving (§4.12)
+  MultipleThread, // multiple threading (§4.13)
+  TurningPass,    // turning cycle (§4.4)
+  ThreadPass,     // simple thread cycle (§4.5)
+  FacingPass,     // facing cycle (§4.6)
 };
-
-/// The code as written: "G71.7".
-const char* turningCycleName(TurningCycle c);
 
 /// One address of a cycle block as programmed: mm, a diameter axis NOT halved.
 struct TurningWord {
@@ -38,7 +36,8 @@ struct TurningWord {
 
 /// The words of one turning-cycle block, raw, by address letter.
 struct TurningWords {
-  TurningCycle cycle = TurningCycle::G71;
+  TurningCycle cycle = TurningCycle::RoughTurning;
+  std::string label; // the code as written ("G71.7"), for messages
   motion::Plane plane = motion::Plane::ZX;
   unsigned diameter = 0; // bit a: axis a (0 X, 1 Y, 2 Z) is diameter-programmed
   std::array<std::optional<TurningWord>, 26> letters;

@@ -8,6 +8,7 @@
 
 #include "cycles/drilling.h"
 #include "diag/codes.h"
+#include "emit/number.h"
 #include "machine/cycle_state.h"
 #include "machine/interpreter.h"
 #include "machine/settings.h"
@@ -57,8 +58,10 @@ bool Interpreter::drillBlock(const BlockWords& w, bool consumedAxes) {
   cycles::DrillWords dw;
   dw.range = blockRange_;
   for (std::size_t i = 0; i < w.gWords.size(); ++i)
-    if (w.gCodes[i] && w.gCodes[i]->action == GAction::DrillCycle)
+    if (w.gCodes[i] && w.gCodes[i]->action == GAction::DrillCycle) {
       dw.code = static_cast<cycles::DrillCycle>(w.gCodes[i]->arg); // the profile's binding
+      dw.label = "G" + emit::formatNumber(w.gWords[i]->number);
+    }
   dw.axis = slot;
   dw.axisPosition = slotValue(slot);
   dw.holeWord = w.hasAxisWord();
@@ -88,6 +91,7 @@ bool Interpreter::drillBlock(const BlockWords& w, bool consumedAxes) {
   for (long i = 1; i <= *holes; ++i) {
     cycles::DrillRequest req;
     req.cycle = *cycles_->drill.cycle;
+    req.label = cycles_->drill.label;
     req.ret = state_.returnToR ? cycles::DrillReturn::RLevel : cycles::DrillReturn::Initial;
     req.plane = state_.plane;
     req.position = program_;
@@ -102,8 +106,7 @@ bool Interpreter::drillBlock(const BlockWords& w, bool consumedAxes) {
     req.radiusCompensation = state_.radiusComp != GAction::RadiusCompOff;
     req.drillScale = std::fabs(m(n, n));
     if (std::fabs(inPlane.determinant()) > 1e-12) req.shiftMap = inPlane.inverse();
-    motion::Frame hole{blockRange_.begin,
-                       fmt::format("{} hole {}", cycles::cycleName(req.cycle), i)};
+    motion::Frame hole{blockRange_.begin, fmt::format("{} hole {}", req.label, i)};
     if (*holes > 1) from_.chain.push_back(hole);
     const auto res = cycles::expandHole(req, blockRange_, config, diags_);
     const bool ok = res && runCycleOps(res->ops, i == 1 ? res->auxAt : kNoAux, w, slot);

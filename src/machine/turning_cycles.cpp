@@ -140,12 +140,15 @@ cycles::TurningWords Interpreter::turningWords(cycles::TurningCycle cycle,
                                                const BlockWords& w) const {
   cycles::TurningWords t;
   t.cycle = cycle;
+  for (std::size_t i = 0; i < w.gWords.size(); ++i)
+    if (w.gCodes[i] && w.gCodes[i]->action == GAction::TurningCycle)
+      t.label = "G" + emit::formatNumber(w.gWords[i]->number);
   t.plane = state_.plane;
   t.diameter = state_.diameterAxes;
   t.range = blockRange_;
   // not a first block of a two-block format: G71.7-G73.7 run with P and Q (their first block
   // has U/W words too), G74.7-G76.7 with an axis word
-  const bool run = cycle <= cycles::TurningCycle::G73 ? (w.p && w.q) : w.hasAxisWord();
+  const bool run = cycle <= cycles::TurningCycle::PatternRepeat ? (w.p && w.q) : w.hasAxisWord();
   auto put = [&](char letter, const ir::Word* x, bool length, bool axis) {
     if (!x) return;
     const bool incremental = axis && (state_.incremental || x->incremental);
@@ -157,13 +160,14 @@ cycles::TurningWords Interpreter::turningWords(cycles::TurningCycle cycle,
     put("IJK"[a], w.ijk[a], true, false);
   }
   // counts and codes keep their number: G73.7 R d (passes), G76.7 P(m)(r)(a) of the first block
-  put('R', w.r, !(cycle == cycles::TurningCycle::G73 && !run), false);
+  put('R', w.r, !(cycle == cycles::TurningCycle::PatternRepeat && !run), false);
   put('P', w.p,
-      !(cycle == cycles::TurningCycle::G76 && !run) && cycle != cycles::TurningCycle::G70 &&
-          cycle != cycles::TurningCycle::G71 && cycle != cycles::TurningCycle::G72 &&
-          cycle != cycles::TurningCycle::G73,
+      !(cycle == cycles::TurningCycle::MultipleThread && !run) &&
+          cycle != cycles::TurningCycle::Finishing && cycle != cycles::TurningCycle::RoughTurning &&
+          cycle != cycles::TurningCycle::RoughFacing &&
+          cycle != cycles::TurningCycle::PatternRepeat,
       false);
-  put('Q', w.q, cycle >= cycles::TurningCycle::G74, false);
+  put('Q', w.q, cycle >= cycles::TurningCycle::FaceGrooving, false);
   put('F', w.f, true, false);
   put('L', w.l, false, false);
   return t;
@@ -186,35 +190,37 @@ bool Interpreter::turningCycle(cycles::TurningCycle cycle, const BlockWords& w) 
   req.feed = state_.feed;
   req.choices = profile_.cycleChoices;
   std::vector<ContourBlock> blocks;
-  const bool contourCycle =
-      cycle == TurningCycle::G71 || cycle == TurningCycle::G72 || cycle == TurningCycle::G73;
+  const bool contourCycle = cycle == TurningCycle::RoughTurning ||
+                            cycle == TurningCycle::RoughFacing ||
+                            cycle == TurningCycle::PatternRepeat;
   if (contourCycle) {
     if (!contourBlocks(w, blocks) || !traceContour(blocks, req.contour)) return false;
   } else {
     // the end point resolves like a move's; a repeat of G77.7-G79.7 keeps what it omits (§4.1)
-    const bool repeat = cycle >= TurningCycle::G77 && turningEnd_;
+    const bool repeat = cycle >= TurningCycle::TurningPass && turningEnd_;
     req.end = target(w, false);
     const motion::PlaneAxes ax = motion::axesOf(state_.plane);
     for (int a : {ax.first, ax.second})
       if (repeat && !axisGiven(w, a)) req.end[a] = (*turningEnd_)[a];
-    if (cycle >= TurningCycle::G77) {
+    if (cycle >= TurningCycle::TurningPass) {
       if (w.r) turningTaper_ = mm(w.r->number);
       req.taper = turningTaper_.value_or(0);
       turningEnd_ = req.end;
-    } else if (w.r && cycle == TurningCycle::G76) {
+    } else if (w.r && cycle == TurningCycle::MultipleThread) {
       req.taper = mm(w.r->number);
     }
-    if ((cycle == TurningCycle::G76 || cycle == TurningCycle::G78) && state_.surfaceSpeed)
+    if ((cycle == TurningCycle::MultipleThread || cycle == TurningCycle::ThreadPass) &&
+        state_.surfaceSpeed)
       diags_.warning(diag::code::CycleThreadCss, blockRange_,
                      fmt::format("{} with constant surface speed G96 on: threading needs a fixed "
                                  "spindle speed (000:1682-1683)",
-                                 cycles::turningCycleName(cycle)));
+                                 words.label));
   }
   const auto ops = cycles::expandTurning(req, cycles_->turning, words, diags_);
   if (!ops) return false;
   // M S F of the P/Q block take effect at the start of the cycle (§4.7, 000:10482)
   if (!runCycleOps(*ops, contourCycle ? 0 : static_cast<std::size_t>(-1), w,
-                   motion::axesOf(state_.plane).normal, cycles::turningCycleName(cycle)))
+                   motion::axesOf(state_.plane).normal, words.label.c_str()))
     return false;
   if (contourCycle) resumeAfter_ = static_cast<std::int64_t>(w.q->number);
   return true;
@@ -243,11 +249,11 @@ bool Interpreter::finishingCycle(const BlockWords& w) {
 bool Interpreter::turningBlock(const BlockWords& w) {
   // the profile binds the code to a cycle of the library (GCodeSpec::arg)
   const auto cycle = std::optional(static_cast<cycles::TurningCycle>(pendingTurning_->arg));
-  if (*cycle == cycles::TurningCycle::G70) return finishingCycle(w) && afterMotion(w);
-  const bool contourRun =
-      (*cycle == cycles::TurningCycle::G71 || *cycle == cycles::TurningCycle::G72 ||
-       *cycle == cycles::TurningCycle::G73) &&
-      w.p && w.q;
+  if (*cycle == cycles::TurningCycle::Finishing) return finishingCycle(w) && afterMotion(w);
+  const bool contourRun = (*cycle == cycles::TurningCycle::RoughTurning ||
+                           *cycle == cycles::TurningCycle::RoughFacing ||
+                           *cycle == cycles::TurningCycle::PatternRepeat) &&
+                          w.p && w.q;
   if (!turningCycle(*cycle, w)) return false;
   return contourRun || afterMotion(w); // a contour cycle ran the block's M S T before its passes
 }

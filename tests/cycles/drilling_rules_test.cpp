@@ -130,7 +130,7 @@ TEST(CyclesSpec_2_6, BlockFunctionsRunAfterOp1OfTheFirstRepetitionOnly) {
 }
 
 TEST(CyclesSpec_2_9, OpsCarryTheManualsStepNumbers) {
-  cycles::DrillRequest req = request(DrillCycle::G76);
+  cycles::DrillRequest req = request(DrillCycle::FineBoring);
   req.hole = cycles::Vec3(5, 0, 0);
   req.vars.i = val(0.5);
   req.vars.p = val(1);
@@ -150,7 +150,7 @@ TEST(CyclesSpec_2_9, OpsCarryTheManualsStepNumbers) {
 // --- §3 op variants ------------------------------------------------------------------------
 
 TEST(CyclesSpec_3_1, G87VariantBIgnoresG99) { // 000:10236-10244
-  cycles::DrillRequest req = request(DrillCycle::G87);
+  cycles::DrillRequest req = request(DrillCycle::BackBore);
   req.ret = cycles::DrillReturn::RLevel;
   req.vars.r = val(-9);
   req.vars.z = val(-2);
@@ -162,12 +162,12 @@ TEST(CyclesSpec_3_1, G87VariantBIgnoresG99) { // 000:10236-10244
 TEST(CyclesSpec_3_9, G84_3TurnsCCWIntoTheHoleAndOrientsWithTSC) {
   cycles::DrillConfig cfg;
   cfg.tapOrient = true;
-  EXPECT_EQ(expand(request(DrillCycle::G84_3), cfg),
+  EXPECT_EQ(expand(request(DrillCycle::RigidTapLeft), cfg),
             "G0 Z2 | M19 | RTAP Z-7 F80 S1000 DIR=CCW | RTAP Z2 F80 S1000 DIR=CW | G0 Z10");
 }
 
 TEST(CyclesSpec_3_9, RetractOverrideOnlyWithEOE) { // 000:10012-10020, Q-24
-  cycles::DrillRequest req = request(DrillCycle::G84_2);
+  cycles::DrillRequest req = request(DrillCycle::RigidTapRight);
   req.vars.overridePercent = val(150); // I as written; updateModal stores it with the shift I
   req.vars.p = val(0.3);
   EXPECT_EQ(expand(req), "G0 Z2 | M24 | RTAP Z-7 F80 S1000 DIR=CW | G4 P0.3 | "
@@ -183,7 +183,7 @@ TEST(CyclesSpec_3_9, RetractOverrideOnlyWithEOE) { // 000:10012-10020, Q-24
 }
 
 TEST(CyclesSpec_3_2, RigidTapNormalPecksReturnToR) { // PTC=1, c = N1505, ROE -> N1507
-  cycles::DrillRequest req = request(DrillCycle::G84_2);
+  cycles::DrillRequest req = request(DrillCycle::RigidTapRight);
   req.position = cycles::Vec3(0, 0, 20);
   req.initial = 20;
   req.vars.r = val(3);
@@ -201,14 +201,14 @@ TEST(CyclesSpec_3_2, RigidTapNormalPecksReturnToR) { // PTC=1, c = N1505, ROE ->
 }
 
 TEST(CyclesSpec_3_2, RigidTapQ0DoesNotPeck) { // G80 leaves Q = 0 (000:9793)
-  cycles::DrillRequest req = request(DrillCycle::G84_2);
+  cycles::DrillRequest req = request(DrillCycle::RigidTapRight);
   req.vars.q = val(0);
   EXPECT_EQ(expand(req),
             "G0 Z2 | M24 | RTAP Z-7 F80 S1000 DIR=CW | RTAP Z2 F80 S1000 DIR=CCW | G0 Z10");
 }
 
 TEST(CyclesSpec_3_2, LastPeckClippedAndNotAccumulated) {
-  cycles::DrillRequest req = request(DrillCycle::G73);
+  cycles::DrillRequest req = request(DrillCycle::HighSpeedPeck);
   req.vars.z = val(-0.7); // D = 2.7 = 3 * 0.9: exactly three pecks despite rounding
   req.vars.q = val(0.9);
   req.vars.e = val(0.1);
@@ -219,7 +219,7 @@ TEST(CyclesSpec_3_2, LastPeckClippedAndNotAccumulated) {
 // --- §2.7 transformations -----------------------------------------------------------------
 
 TEST(CyclesSpec_2_7, PecksKeepTheirSizeUnderScaling) {
-  cycles::DrillRequest req = request(DrillCycle::G73);
+  cycles::DrillRequest req = request(DrillCycle::HighSpeedPeck);
   req.vars.z = val(-1);
   req.vars.q = val(3);
   req.vars.e = val(0.4);
@@ -228,7 +228,7 @@ TEST(CyclesSpec_2_7, PecksKeepTheirSizeUnderScaling) {
 }
 
 TEST(CyclesSpec_2_7, ShiftGoesThroughTheInverseInPlaneTransform) {
-  cycles::DrillRequest req = request(DrillCycle::G76);
+  cycles::DrillRequest req = request(DrillCycle::FineBoring);
   req.vars.i = val(1);
   req.shiftMap << 0, 1, -1, 0; // inverse of a +90° rotation
   EXPECT_EQ(expand(req), "G0 Z2 | G1 Z-7 F80 | M19 | G0 Y-1 | G0 Z10 | G0 Y0 | M3");
@@ -272,7 +272,7 @@ TEST(CyclesSpec_7, RepetitionCountRange) {
     diag::Engine diags;
     cycles::DrillModal modal;
     cycles::DrillWords w;
-    w.code = DrillCycle::G81;
+    w.code = DrillCycle::Drill;
     w.holeWord = true;
     w.vars.z = val(-1);
     w.vars.r = val(1);
@@ -295,7 +295,7 @@ TEST(CyclesSpec_7, NoErrorOutsideCycleMode) { // Q and L mean other things there
 }
 
 TEST(CyclesSpec_7, ExpandHoleChecksZAndRItself) {
-  cycles::DrillRequest req = request(DrillCycle::G81);
+  cycles::DrillRequest req = request(DrillCycle::Drill);
   req.vars.r.reset();
   diag::Engine diags;
   EXPECT_FALSE(cycles::expandHole(req, {}, {}, diags));
@@ -313,7 +313,7 @@ TEST(CyclesSpec_3_1, WrongSpindleDirectionWarns) {
 }
 
 TEST(CyclesSpec_9_Q20, RadiusCompensationWarns) {
-  cycles::DrillRequest req = request(DrillCycle::G81);
+  cycles::DrillRequest req = request(DrillCycle::Drill);
   req.radiusCompensation = true;
   diag::Engine diags;
   ASSERT_TRUE(cycles::expandHole(req, {}, {}, diags));
@@ -328,15 +328,13 @@ TEST(CyclesSpec_2_1, NctBindsItsCodesToTheCycles) {
   auto cycleOf = [](double code) {
     const GCodeSpec* g = nct::profile().gcode(code);
     EXPECT_TRUE(g && g->action == GAction::DrillCycle) << code;
-    return g ? static_cast<DrillCycle>(g->arg) : DrillCycle::G89;
+    return g ? static_cast<DrillCycle>(g->arg) : DrillCycle::BoreDwellFeedOut;
   };
-  EXPECT_EQ(cycleOf(84.2), DrillCycle::G84_2);
-  EXPECT_EQ(cycleOf(73), DrillCycle::G73);
-  EXPECT_EQ(cycleOf(81), DrillCycle::G81);
-  EXPECT_EQ(cycleOf(89), DrillCycle::G89);
+  EXPECT_EQ(cycleOf(84.2), DrillCycle::RigidTapRight);
+  EXPECT_EQ(cycleOf(73), DrillCycle::HighSpeedPeck);
+  EXPECT_EQ(cycleOf(81), DrillCycle::Drill);
+  EXPECT_EQ(cycleOf(89), DrillCycle::BoreDwellFeedOut);
   EXPECT_EQ(nct::profile().gcode(80)->action, GAction::CycleCancel);
-  EXPECT_STREQ(cycles::cycleName(DrillCycle::G84_3), "G84.3");
-  EXPECT_STREQ(cycles::cycleName(DrillCycle::G73), "G73");
 }
 
 TEST(CyclesSpec_2_8, ParametersFromTheSetup) {

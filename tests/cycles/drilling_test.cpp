@@ -84,7 +84,7 @@ TEST(CyclesSpec_8_TV05, DirectionAngleInACycle) {
   diag::Engine diags;
   cycles::DrillModal modal;
   cycles::DrillWords w;
-  w.code = DrillCycle::G81;
+  w.code = DrillCycle::Drill;
   w.holeWord = true;
   w.axisPosition = 10;
   w.vars.r = val(-2, true);

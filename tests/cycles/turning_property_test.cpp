@@ -119,7 +119,7 @@ std::vector<cycles::CycleOp> run(const Case& c, double du, double dw) {
   cycles::TurningModal modal;
   modal.roughDepth = c.depth, modal.roughRetract = c.retract;
   cycles::TurningWords w;
-  w.cycle = c.facing ? cycles::TurningCycle::G72 : cycles::TurningCycle::G71;
+  w.cycle = c.facing ? cycles::TurningCycle::RoughFacing : cycles::TurningCycle::RoughTurning;
   w.diameter = 1;
   w.set('P', 50), w.set('Q', 60), w.set('U', du), w.set('W', dw), w.set('F', 0.2);
   diag::Engine diags;
