@@ -66,6 +66,17 @@ struct EquivCommandOptions {
   std::string report;          // --report: the HTML page (docs/equivalence.md), empty: none
 };
 
+struct TranslateOptions {
+  CommonOptions common; // common.dialect: --from
+  std::string to;
+  std::string output; // a file, or the folder of a batch; empty: standard output
+  std::string setup;
+  bool verify = true; // --no-verify: write without the equivalence proof
+  double tolerance = 0.001;
+  std::string rs274 = "rs274";
+  unsigned batchJobs = 2; // --jobs of a batch: translations at once
+};
+
 int runCheck(const std::vector<std::string>& files, const CommonOptions& opt);
 int runFmt(const std::string& file, const std::string& output, const CommonOptions& opt);
 int runDumpIr(const std::string& file, const CommonOptions& opt);
@@ -73,5 +84,7 @@ int runExpand(const std::string& file, const ExpandOptions& opt);
 int runRun(const std::string& file, const RunOptions& opt);
 int runPlot(const std::string& file, const PlotOptions& opt);
 int runEquiv(const std::string& a, const std::string& b, const EquivCommandOptions& opt);
+/// A file, or every program of a folder tree (cli/translate_batch.h).
+int runTranslate(const std::string& input, const TranslateOptions& opt);
 
 } // namespace gcx::cli

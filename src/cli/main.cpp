@@ -8,6 +8,7 @@
 
 #include "cli/block_pipeline.h"
 #include "cli/commands.h"
+#include "cli/translate_target.h"
 #include "dialect/dialect.h"
 
 int main(int argc, char** argv) {
@@ -151,6 +152,37 @@ int main(int argc, char** argv) {
   addCommon(equiv);
   addExecution(equiv);
 
+  TranslateOptions translateOpt;
+  std::string translateInput;
+  CLI::App* translate = app.add_subcommand(
+      "translate", "write a program for another target, proven to move the tool the same");
+  translate->add_option("IN", translateInput, "program file, or a folder of programs")->required();
+  translate
+      ->add_option("--to", translateOpt.to,
+                   "target: " + gcx::cli::translateTargetNames() +
+                       " (canonical and ngc: RS274/NGC that LinuxCNC runs)")
+      ->required();
+  translate
+      ->add_option("--from", common.dialect, "dialect of the input (default: from the extension)")
+      ->check(CLI::IsMember(gcx::dialectNames()));
+  translate->add_option("-o,--output", translateOpt.output,
+                        "output file (default: standard output), or the folder of a batch");
+  translate->add_option("--setup", translateOpt.setup,
+                        "machine setup (JSON); in a batch, a program's NAME.setup.json wins");
+  translate->add_flag("!--no-verify", translateOpt.verify,
+                      "write without proving the result equivalent (gcx equiv)");
+  translate->add_option("--tol", translateOpt.tolerance, "how far the paths may be apart (mm)")
+      ->check(CLI::PositiveNumber);
+  translate->add_option("--rs274", translateOpt.rs274,
+                        "LinuxCNC's rs274 that reads the RS274/NGC result (default: PATH)");
+  translate->add_option("--jobs", translateOpt.batchJobs, "translations at once in a batch")
+      ->check(CLI::Range(1, 64));
+  translate
+      ->add_option("--encoding", common.encoding,
+                   "encoding of the program files (default: the dialect's)")
+      ->check(CLI::IsMember(gcx::front::encodingNames()));
+  translate->add_option("--lib", common.libraryDirs, "folders searched for called programs");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -177,6 +209,11 @@ int main(int argc, char** argv) {
     if (plot->parsed()) {
       plotOpt.common = common;
       return runPlot(plotFile, plotOpt);
+    }
+    if (translate->parsed()) {
+      translateOpt.common = common;
+      translateOpt.common.jobs = 1; // a batch runs translations side by side instead
+      return runTranslate(translateInput, translateOpt);
     }
     if (equiv->parsed()) {
       equivOpt.common = common;

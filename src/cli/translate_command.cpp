@@ -1,0 +1,118 @@
+// gcx translate IN --to T: a program written for another controller, proven to move the tool
+// like the original before it is written (docs/translation.md). The output is staged beside its
+// destination, checked with the equivalence engine (`gcx equiv`), and only then moved into
+// place; a translation that does not hold leaves no file.
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <iostream>
+#include <unistd.h>
+
+#include "cli/commands.h"
+#include "cli/equiv_program.h"
+#include "cli/translate_batch.h"
+#include "cli/translate_target.h"
+#include "diag/diagnostic.h"
+#include "dialect/dialect.h"
+#include "equiv/equiv.h"
+#include "equiv/report.h"
+
+namespace gcx::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A name beside the destination (same file system: the final rename is atomic), or in the
+// temporary folder when the result goes to standard output.
+fs::path stagingPath(const std::string& output, const std::string& extension) {
+  const std::string name = fmt::format(".gcx-translate-{}{}", getpid(), extension);
+  if (output.empty()) return fs::temp_directory_path() / name;
+  const fs::path out(output);
+  return (out.has_parent_path() ? out.parent_path() : fs::path(".")) / name;
+}
+
+bool copyToStdout(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::cout << in.rdbuf();
+  return static_cast<bool>(std::cout);
+}
+
+// Runs source and translation through the equivalence engine; prints why they differ.
+bool verified(const std::string& source, const fs::path& result, const TranslateTarget& target,
+              const TranslateOptions& opt) {
+  equiv::ProgramInput a{source, opt.setup, equiv::ProgramInput::Reader::Auto};
+  // canonical motion has the offsets of the setup written into it; a dialect's program reads
+  // them from the same setup as its source
+  equiv::ProgramInput b{result.string(), target.dialect ? opt.setup : std::string(),
+                        equiv::ProgramInput::Reader::Auto};
+  equiv::EquivOptions o;
+  o.gcxProgram = gcxProgramMaker(opt.common);
+  o.walk.tolerance = opt.tolerance;
+  o.rs274 = opt.rs274;
+  const equiv::EquivOutcome out = equiv::checkEquivalence(a, b, o);
+  if (!out.a || !out.b) return false;
+  for (const equiv::ProgramSide* side : {out.a.get(), out.b.get()})
+    for (const diag::Diagnostic& d : side->diagnostics())
+      std::cerr << diag::renderText(d, side->sources());
+  if (!out.ok) return false;
+  if (out.result.equivalent) return true;
+  std::cerr << "gcx: error: the translation does not move the tool like " << source
+            << "; nothing was written:\n"
+            << equiv::renderText(out, opt.tolerance);
+  return false;
+}
+
+} // namespace
+
+int runTranslate(const std::string& input, const TranslateOptions& opt) {
+  if (fs::is_directory(input)) return runTranslateBatch(input, opt);
+  const Dialect* source =
+      opt.common.dialect.empty() ? dialectForPath(input) : findDialect(opt.common.dialect);
+  if (!source) {
+    diag::reportUsage(
+        fmt::format("{}: cannot tell the dialect from the file name; name it with --from", input));
+    return UsageError;
+  }
+  std::string why;
+  const std::optional<TranslateTarget> target = translateTarget(*source, opt.to, why);
+  if (!target) {
+    diag::reportUsage(why);
+    return UsageError;
+  }
+  const fs::path staged = stagingPath(opt.output, target->extension);
+  ExpandOptions expand;
+  expand.common = opt.common;
+  expand.common.dialect = source->name;
+  expand.to = target->expandTo;
+  expand.output = staged.string();
+  expand.setup = opt.setup;
+  struct Discard {
+    fs::path path;
+    ~Discard() {
+      std::error_code ec;
+      fs::remove(path, ec);
+    }
+  } discard{staged};
+  if (const int rc = runExpand(input, expand)) return rc;
+  if (opt.verify && !verified(input, staged, *target, opt)) return ProgramErrors;
+  if (opt.output.empty()) {
+    if (!copyToStdout(staged)) return UsageError;
+  } else {
+    std::error_code ec;
+    fs::rename(staged, opt.output, ec);
+    if (ec) {
+      diag::reportUsage(fmt::format("cannot write {}: {}", opt.output, ec.message()));
+      return UsageError;
+    }
+  }
+  if (!target->note.empty()) std::cerr << "gcx: note: " << input << ": " << target->note << '\n';
+  if (opt.verify)
+    std::cerr << fmt::format("gcx: {} -> {}: verified, moves the tool like the source within {} "
+                             "mm\n",
+                             input, opt.output.empty() ? "standard output" : opt.output,
+                             opt.tolerance);
+  return Ok;
+}
+
+} // namespace gcx::cli

@@ -1,0 +1,27 @@
+// What `gcx translate --to T` writes for a source dialect: the expansion that produces it, the
+// file extension, and the note saying which structures were expanded and why.
+#pragma once
+#include <optional>
+#include <string>
+
+#include "dialect/dialect.h"
+
+namespace gcx::cli {
+
+struct TranslateTarget {
+  std::string name;                 // as given: "ngc", "canonical", "nct"
+  std::string expandTo;             // the expansion that writes it: "canonical" or a dialect
+  const Dialect* dialect = nullptr; // null: RS274/NGC that LinuxCNC runs
+  std::string extension;            // of the output file: ".ngc", ".nct"
+  std::string note;                 // the structures the output does not keep, and why
+};
+
+/// The target, or nullopt with the reason in why (an unknown target, or a pair of dialects gcx
+/// cannot translate between yet).
+std::optional<TranslateTarget> translateTarget(const Dialect& source, const std::string& to,
+                                               std::string& why);
+
+/// "canonical, ngc, nct, fms3000, wl4": every name --to takes.
+std::string translateTargetNames();
+
+} // namespace gcx::cli

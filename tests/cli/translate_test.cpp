@@ -1,0 +1,159 @@
+// gcx translate (docs/translation.md): a translation is written only when the equivalence engine
+// proves it moves the tool like its source; targets gcx cannot translate to yet are refused with
+// no file; a batch translates a tree, each program in its own process, with a report.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fmt/format.h>
+#include <fstream>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "support/test_support.h"
+
+namespace gcx::test {
+namespace {
+
+struct Result {
+  int exitCode = -1;
+  std::string out;
+  std::string err;
+};
+
+class TranslateCli : public testing::Test {
+protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / fmt::format("gcx-translate-{}", getpid());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path write(const std::string& name, const std::string& bytes) {
+    const fs::path p = dir_ / name;
+    fs::create_directories(p.parent_path());
+    std::ofstream(p, std::ios::binary) << bytes;
+    return p;
+  }
+  Result gcx(const std::string& args) {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string cmd = fmt::format("cd {} && {} {} >{} 2>{}", dir_.string(), GCX_BINARY, args,
+                                        out.string(), err.string());
+    Result r;
+    r.exitCode = WEXITSTATUS(std::system(cmd.c_str()));
+    r.out = readFile(out);
+    r.err = readFile(err);
+    fs::remove(out), fs::remove(err);
+    return r;
+  }
+
+  fs::path dir_;
+};
+
+constexpr const char* kProgram = "G90 G0 X10 Y5\nG1 X20 F100\nM30\n";
+constexpr const char* kCanonical =
+    "(gcx canonical motion: machine frame, mm, absolute; offsets and tool lengths are in the "
+    "coordinates)\nG21 G90 G94 G17 G40 G49 G80 G54\nG0 X10 Y5 Z0\nG1 X20 Y5 Z0 F100\nM30\n";
+
+TEST_F(TranslateCli, AVerifiedTranslationIsWrittenWithANoteOnWhatWasExpanded) {
+  write("A.nct", kProgram);
+  const Result r = gcx("translate A.nct --to ngc -o A.ngc");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(readFile(dir_ / "A.ngc"), kCanonical);
+  EXPECT_EQ(r.err, "gcx: note: A.nct: written as plain G0-G3 motion: keeping cycles, subprograms, "
+                   "loops and variables as LinuxCNC O-words and G81-G89 is not implemented yet\n"
+                   "gcx: A.nct -> A.ngc: verified, moves the tool like the source within 0.001 "
+                   "mm\n");
+  // nothing staged is left behind
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 2);
+}
+
+TEST_F(TranslateCli, ToStandardOutputAfterTheProof) {
+  write("A.nct", kProgram);
+  const Result r = gcx("translate A.nct --to canonical");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out, kCanonical);
+  EXPECT_EQ(r.err, "gcx: A.nct -> standard output: verified, moves the tool like the source "
+                   "within 0.001 mm\n");
+}
+
+// A reader of the result that disagrees (an rs274 that moves X20 to X21) makes the proof fail:
+// exit 1, the first divergence named, and no file.
+TEST_F(TranslateCli, ATranslationThatDoesNotHoldIsNotWritten) {
+  if (std::system("command -v rs274 >/dev/null 2>&1") != 0) GTEST_SKIP() << "needs rs274";
+  write("A.nct", kProgram);
+  const fs::path fake =
+      write("fake-rs274", "#!/bin/bash\nargs=()\nfor a in \"$@\"; do\n  if [[ $a == *.ngc ]]; then "
+                          "sed 's/X20 /X21 /' \"$a\" > \"$a.x.ngc\"; a=\"$a.x.ngc\"; fi\n"
+                          "  args+=(\"$a\")\ndone\nexec rs274 \"${args[@]}\"\n");
+  ::chmod(fake.c_str(), 0755);
+  const Result r = gcx("translate A.nct --to ngc -o A.ngc --rs274 " + fake.string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_FALSE(fs::exists(dir_ / "A.ngc"));
+  EXPECT_NE(r.err.find("gcx: error: the translation does not move the tool like A.nct; nothing "
+                       "was written:\n"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("A.nct:2"), std::string::npos) << r.err; // the source line of the move
+}
+
+TEST_F(TranslateCli, AnotherDialectIsRefusedUntilItsEmitterMapsMeaning) {
+  write("A.nct", kProgram);
+  const Result r = gcx("translate A.nct --to fms3000 -o A.fms");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_FALSE(fs::exists(dir_ / "A.fms"));
+  EXPECT_EQ(r.err, "gcx: error: translating nct to fms3000 is not implemented yet: the fms3000 "
+                   "emitter does not map nct's codes to their meaning (--to canonical or --to ngc "
+                   "writes the motion, proven equivalent)\n");
+  EXPECT_EQ(gcx("translate A.nct --to dxf").err,
+            "gcx: error: --to dxf: the targets are canonical, ngc, nct, fms3000, wl4\n");
+}
+
+TEST_F(TranslateCli, TheSameDialectKeepsCyclesAndExpandsTheRest) {
+  write("A.nct", "G90 G0 X0 Y0 Z10\nG99 G81 X5 R2 Z-3 F100\nX10\nG80\nM30\n");
+  const Result r = gcx("translate A.nct --to nct -o B.nct");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(readFile(dir_ / "B.nct"), "G90 G0 X0 Y0 Z10\nG99 G81 X5 R2 Z-3 F100\nX10\nG80\nM30\n");
+  EXPECT_NE(r.err.find("gcx: note: A.nct: subprograms, loops, variables and modal calls expanded "
+                       "into the blocks they run\n"),
+            std::string::npos)
+      << r.err;
+}
+
+// A tree: each program in its own process, a failure reported without stopping the rest, the
+// program's own setup beside it, other files skipped; report.csv names every program.
+TEST_F(TranslateCli, ABatchTranslatesATreeAndReportsEachProgram) {
+  write("in/a/ONE.nct", kProgram);
+  write("in/a/ONE.setup.json", R"({"work_offsets": {"G54": [100, 0, 0]}})");
+  write("in/b/TWO.nct", "G0 X1\nG1 X2\nM30\n"); // G1 without F: an error
+  write("in/b/THREE.wl4", "%THREE\nG0 X5 Y5\nM2\n%\n");
+  write("in/notes.txt", "not a program\n");
+  const Result r = gcx("translate in --to ngc -o out --jobs 2");
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_NE(r.out.find("3 programs to ngc with 2 jobs in "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(": 2 verified, 1 failed; 2 other files skipped;"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("failed: b/TWO.nct: "), std::string::npos) << r.out;
+  EXPECT_NE(readFile(dir_ / "out/a/ONE.ngc").find("G0 X110 Y5 Z0\n"), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir_ / "out/b/THREE.ngc"));
+  EXPECT_FALSE(fs::exists(dir_ / "out/b/TWO.ngc"));
+  const std::string csv = readFile(dir_ / "out/report.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "program,output,status,exit,seconds,peak_rss_kb,reason");
+  EXPECT_NE(csv.find("\na/ONE.nct,out/a/ONE.ngc,verified,0,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\nb/THREE.wl4,out/b/THREE.ngc,verified,0,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\nb/TWO.nct,out/b/TWO.ngc,failed,1,"), std::string::npos) << csv;
+  EXPECT_NE(readFile(dir_ / "out/report.html").find("<td>b/TWO.nct</td><td>failed</td>"),
+            std::string::npos);
+}
+
+TEST_F(TranslateCli, ABatchNeedsAnOutputFolder) {
+  write("in/ONE.nct", kProgram);
+  const Result r = gcx("translate in --to ngc");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(
+      r.err,
+      "gcx: error: translating a folder needs -o OUTDIR, the folder the translations go to\n");
+}
+
+} // namespace
+} // namespace gcx::test
