@@ -69,6 +69,9 @@ inline constexpr const char* IllegalChamfer = "2085";     // no plane element be
 inline constexpr const char* ChamferTooBig = "GCX074";    // does not fit on the elements
 inline constexpr const char* AngleLine = "GCX075";        // ,A outside a one-coordinate G0/G1
 inline constexpr const char* CompOnlyCode = "GCX076";     // G38/G39 without G41/G42
+// intersection calculations (nct.md §4.3)
+inline constexpr const char* IntersectionElement = "GCX077"; // no element to intersect with
+inline constexpr const char* IntersectionChoice = "GCX078";  // two points and no Q to choose
 // --- gcx: execution
 inline constexpr const char* NotImplemented = "GCX030";
 inline constexpr const char* UnknownGCodeAtRun = "GCX031";

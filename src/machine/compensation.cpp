@@ -136,6 +136,16 @@ bool CompensationStage::event(const motion::Event& e, motion::Sink& out) {
   return true;
 }
 
+bool CompensationStage::endWaitingAt(const motion::Vec3& end) {
+  if (!pending_) return false;
+  const motion::PlaneAxes ax = motion::axesOf(plane_);
+  motion::Event& e = pending_->e;
+  e.end[ax.first] = end[ax.first], e.end[ax.second] = end[ax.second];
+  if (e.kind == Kind::Arc) e.endRadius = (planar(e.end) - planar(e.center)).norm();
+  pending_->path = pathOf(e);
+  return true;
+}
+
 bool CompensationStage::element(const motion::Event& e, motion::Sink& out) {
   const Path2 path = pathOf(e);
   const double d = side_ * radius_;

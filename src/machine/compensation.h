@@ -48,6 +48,9 @@ public:
   void breakLookAhead(motion::Sink& out);
   /// One event of the programmed stream. False after a failure (failure()).
   bool event(const motion::Event& e, motion::Sink& out);
+  /// An intersection calculation (nct.md §4.3) moves the waiting element's programmed end to
+  /// `end` (in the plane; on its line or circle). False when no element waits.
+  bool endWaitingAt(const motion::Vec3& end);
   const std::optional<CompensationFailure>& failure() const { return failure_; }
   /// Compensation is on, or the tool is not yet back on the programmed path.
   bool engaged() const { return side_ != 0 || pending_ || displaced_; }
