@@ -32,6 +32,49 @@ TEST(CompNctSpec_7, TV22_IntersectionLineCircle) {
   EXPECT_EQ(farther.events[2].from.at.line, 3u);
 }
 
+// TV21 with N10 given by a point of its line instead of its direction (000:9050-9060): X50
+// Y33.094 is no end point, only a point the line passes; the spec's result within 0.001.
+TEST(CompNctSpec_7, TV21_PassThroughPointVariant) {
+  ProgramRun r = runNct("G17 G90 G41 D0\nG0 X90 Y10\nN10 G1 X50 Y33.094 F100\nN20 X10 Y20 ,A225\n"
+                        "G0 X0 Y20\n");
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(compMotion(r.motion()),
+            (V{"R 90,10,0", "L 32.9423,42.9423,0 F100", "L 10,20,0 F100", "R 0,20,0"}));
+  ASSERT_GE(r.events.size(), 3u);
+  EXPECT_EQ(r.events[1].from.at.line, 3u);
+  EXPECT_EQ(r.events[2].from.at.line, 4u);
+}
+
+// 000:9071-9086: a chamfer or rounding on the element before is measured back from the
+// computed intersection (the chamfer 10 from (32.9423,42.9423) on both lines; the rounding
+// R10 tangent to both, turning left through 75 degrees).
+TEST(CompNctSpec_4_3, ChamferAndRoundingAtAnIntersection) {
+  const std::string head = "G17 G90 G41 D0\nG0 X90 Y10\nN10 G1 X50 Y33.094 F100 ";
+  const std::string tail = "\nN20 X10 Y20 ,A225\nG0 X0 Y20\n";
+  ProgramRun chamfer = runNct(head + ",C10" + tail);
+  ASSERT_TRUE(chamfer.errors.empty()) << chamfer.rendered;
+  EXPECT_EQ(compMotion(chamfer.motion()),
+            (V{"R 90,10,0", "L 41.6025,37.9423,0 F100", "L 25.8712,35.8712,0 F100",
+               "L 10,20,0 F100", "R 0,20,0"}));
+  ProgramRun rounding = runNct(head + ",R10" + tail);
+  ASSERT_TRUE(rounding.errors.empty()) << rounding.rendered;
+  EXPECT_EQ(compMotion(rounding.motion()),
+            (V{"R 90,10,0", "L 39.5875,39.1056,0 F100",
+               "CCW 27.5165,37.5165,0 C34.5875,30.4454 r10 θ75", "L 10,20,0 F100", "R 0,20,0"}));
+}
+
+// 000:9163-9172: O9981 with ,R15 on the line: the rounding (a right turn, so clockwise, its
+// centre 65 from the circle's) is fitted to the computed line-circle intersection.
+TEST(CompNctSpec_4_3, RoundingAtALineCircleIntersection) {
+  ProgramRun r = runNct("N10 G17 G42 G0 X100 Y20 D0\nN20 G1 X-30 Y-20 ,R15 F100\n"
+                        "N30 G3 X20 Y40 I20 J-10 R50 Q-1\nN40 G40 G0 Y60\nN50 X120\n");
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(compMotion(r.motion()),
+            (V{"R 100,20,0", "L 77.5527,13.0931,0 F100",
+               "CW 60.878,18.7922,0 C73.1414,27.4298 r15 θ71.944",
+               "CCW 20,40,0 C20,-10 r50 θ54.8413", "R 20,60,0", "R 120,60,0"}));
+}
+
 // O9983/O9984 (000:9229-9245), F100 added: the arc N30 (X-50 Y0 only a point of its circle)
 // ends where the over-determined line N40 crosses it, Q along the line's direction ,A.
 TEST(CompNctSpec_7, TV23_IntersectionCircleLine) {
