@@ -136,6 +136,15 @@ bool CompensationStage::event(const motion::Event& e, motion::Sink& out) {
   return true;
 }
 
+bool CompensationStage::cornerArcTowards(const Vec2& direction, motion::Sink& out) {
+  if (failure_ || !pending_) return false;
+  const Element& a = *pending_;
+  const Vec2 corner = a.path.b;
+  return release({corner + a.d * comp::leftOf(comp::tangentAt(a.path, true)),
+                  corner + a.d * comp::leftOf(direction.normalized())},
+                 true, out);
+}
+
 bool CompensationStage::endWaitingAt(const motion::Vec3& end) {
   if (!pending_) return false;
   const motion::PlaneAxes ax = motion::axesOf(plane_);

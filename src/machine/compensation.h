@@ -41,6 +41,9 @@ public:
   void zeroPlaneMove() { zeroMove_ = true; }
   /// G39: the next outer corner is passed on an arc of the radius about the corner point.
   void cornerArc() { cornerArc_ = true; }
+  /// G39 I J K: the waiting element ends on an arc of the radius about its end point, from its
+  /// end perpendicular to the perpendicular of `direction`. False when no element waits.
+  bool cornerArcTowards(const comp::Vec2& direction, motion::Sink& out);
   /// G38: this block's plane element ends with the vector it starts with.
   void holdVector() { holdBlock_ = blockIndex_; }
   /// A look-ahead breaker (nct.md §3.17.7): the waiting element ends on its programmed point,

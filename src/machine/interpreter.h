@@ -291,6 +291,8 @@ private:
   CompensationStage::Options compensationOptions() const;
   /// The block's G40/G41/G42, D, plane and look-ahead breakers, handed to the stage.
   bool radiusCompensation(const BlockWords& w, const ModalState& before);
+  /// G39 I J K: the corner arc towards the perpendicular of the vector, now.
+  bool cornerArcTowards(const BlockWords& w, const ir::Word& g39);
   /// Reports a stage's failure as a located error; always false.
   bool compensationFailed(const CompensationFailure& f);
   /// ,A completes `to`; ,C and ,R are requested from the corner stage (contour_geometry.cpp).
