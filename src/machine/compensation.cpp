@@ -160,7 +160,7 @@ bool CompensationStage::element(const motion::Event& e, motion::Sink& out) {
   const double d = side_ * radius_;
   if (cancelPending_) {
     cancelPending_ = false;
-    if (pending_ && blockIndex_ == cancelBlock_) {
+    if (pending_ && blockIndex_ == cancelBlock_ && !options_.cancelPerpendicular) {
       const auto c = comp::corner(pending_->path, path, pending_->d, pending_->d,
                                   comp::Join::Cancel, options_.outer, direction_);
       if (!release(c.points, c.arcAbout, out)) return false;
@@ -191,6 +191,12 @@ bool CompensationStage::element(const motion::Event& e, motion::Sink& out) {
       join = comp::Join::Direction, dSecond = d;
     const auto rule = cornerArc_ ? comp::OuterCorner::Arc : options_.outer;
     auto c = comp::corner(a.path, path, a.d, dSecond, join, rule, a.virtualDir);
+    if (c.arcAbout && c.points.size() == 2 &&
+        (c.points[1] - c.points[0]).norm() <= options_.arcGapLimit) // a nearly smooth corner
+      c = comp::corner(a.path, path, a.d, dSecond, join, comp::OuterCorner::TypeC, a.virtualDir);
+    if (a.startUp && options_.startUpPerpendicular && !a.virtualDir)
+      c = comp::CornerResult{
+          {path.a + d * comp::leftOf(comp::tangentAt(path, false))}, false, false};
     if (a.hold) // G38: the start vector again at the end (nct.md §3.17.5)
       c = comp::CornerResult{{a.path.b + (a.start - a.path.a)}, false, false};
     if (c.noIntersection)

@@ -27,6 +27,9 @@ public:
     int lookAheadBlocks = 2; // blocks read beyond a plane element for its successor
     bool interferenceCheck = true;
     comp::OuterCorner outer = comp::OuterCorner::TypeC;
+    double arcGapLimit = 0;            // an arc corner with a smaller gap: the intersection
+    bool startUpPerpendicular = false; // start-up ends on the next element's start perpendicular
+    bool cancelPerpendicular = false;  // the cancel's element ends on its end perpendicular
   };
   CompensationStage() = default;
   explicit CompensationStage(Options o) : options_(o) {}
