@@ -57,6 +57,15 @@ TEST(CompFms3000_4_2, TenBlocksWithoutPlaneMotion) {
   EXPECT_EQ(stop.errors, V{"main.fms:3:1 2090"}) << stop.rendered;
 }
 
+// fms3000.md §3.7: a G47 line (+10 on both axes) is compensated like any line: start-up and
+// cancel on its perpendiculars, 5 * (-0.7071, 0.7071) from its ends.
+TEST(CompFms3000_4_2, ImplicitCoordinateG47Compensated) {
+  MacroRun r = runFms("G0X0Y-10\nG1G41D1X0Y0F100\nG91X10G47\nG90G0G40X20Y0\nM30\n", compSetup(5));
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(compMotion(r.motion()),
+            (V{"R 0,-10,0", "L -3.5355,3.5355,0 F100", "L 6.4645,13.5355,0 F100", "R 20,0,0"}));
+}
+
 // wl4.md §4.2: an outer corner whose offsets leave a gap above Delt_L is passed on an arc
 // about the corner point (the same square as T25).
 TEST(CompWl4_4_2, OuterCornersOnArcs) {
