@@ -29,6 +29,10 @@ bool Interpreter::contourGeometry(const BlockWords& w, Vec3& to) {
     if (!first && !second && compensating && !directionLine_) {
       // a line known by its direction only: it ends where the next, over-determined line
       // meets it (nct.md §4.3 line-line, TV21); nothing moves yet
+      if (w.chamfer || w.rounding)
+        return fail(diag::code::NotImplemented, (w.chamfer ? w.chamfer : w.rounding)->range,
+                    "a chamfer or rounding on a line given by its direction alone is not "
+                    "implemented yet");
       directionLine_ = DirectionLine{w.angle->number, from_, state_.motion, state_.feed};
       to = program_;
       return true;
@@ -70,12 +74,19 @@ bool Interpreter::contourGeometry(const BlockWords& w, Vec3& to) {
                      m(ax.first, ax.second) * m(ax.second, ax.first);
   const double col1 = std::hypot(m(ax.first, ax.first), m(ax.second, ax.first));
   const double col2 = std::hypot(m(ax.first, ax.second), m(ax.second, ax.second));
-  if (std::fabs(col1 - col2) > 1e-9 * col1)
-    return fail(diag::code::NotImplemented, word->range,
-                "a chamfer or rounding under scaling with unequal factors is not implemented yet");
+  double factor = std::sqrt(std::fabs(det));
+  if (std::fabs(col1 - col2) > 1e-9 * col1) {
+    // unequal factors: a rounding takes their mean (000:8694-8697); the manual gives no
+    // rule for a chamfer
+    if (w.chamfer)
+      return fail(diag::code::NotImplemented, word->range,
+                  "a chamfer under scaling with unequal factors is not implemented (the manual "
+                  "gives a rule only for ,R)");
+    factor = (col1 + col2) / 2;
+  }
   corners_.request(w.chamfer ? ContourCornerStage::Kind::Chamfer
                              : ContourCornerStage::Kind::Rounding,
-                   mm(word->number) * std::sqrt(std::fabs(det)), state_.plane);
+                   mm(word->number) * factor, state_.plane);
   return true;
 }
 

@@ -167,6 +167,11 @@ TEST(CompNctSpec_4_3, DirectionLineNotFollowedByAnOverDeterminedElementGCX077) {
   EXPECT_EQ(end.errors, V{"3:1 GCX077"}) << end.rendered;
 }
 
+TEST(CompNctSpec_4_3, RoundingOnADirectionOnlyLineIsNotImplemented) {
+  ProgramRun r = runNct("G17 G90 G41 D0\nG0 X90 Y10\nN10 G1 ,A150 ,R5 F100\nN20 X10 Y20 ,A225\n");
+  EXPECT_EQ(r.errors, V{"3:14 GCX030"}) << r.rendered;
+}
+
 TEST(CompNctSpec_4_3, TwoPointsWithoutQGCX078) {
   ProgramRun r = runNct("N10 G17 G42 G0 X100 Y20 D0\nN20 G1 X-30 Y-20 F100\n"
                         "N30 G3 X20 Y40 I20 J-10 R50\n");
