@@ -45,6 +45,7 @@ enum class Setting : unsigned char {
   CompLookAhead,        // blocks radius compensation reads ahead beyond the 2 it always reads
   CompInterference,     // 1: a compensated move against its programmed direction is an alarm
   SetCoordinatesMode,   // 0: set-coordinates words are the tool's position in the new system
+  CompMergeDistance,    // mm: corner vectors closer than this on both axes are merged
 };
 
 /// Where the setup holds a setting in this dialect.

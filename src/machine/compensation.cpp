@@ -194,6 +194,18 @@ bool CompensationStage::element(const motion::Event& e, motion::Sink& out) {
     if (c.arcAbout && c.points.size() == 2 &&
         (c.points[1] - c.points[0]).norm() <= options_.arcGapLimit) // a nearly smooth corner
       c = comp::corner(a.path, path, a.d, dSecond, join, comp::OuterCorner::TypeC, a.virtualDir);
+    if (!c.arcAbout && options_.mergeDistance > 0) { // nct.md §3.17.1, 000:7700-7712
+      // an inserted vector closer than DELTV on both axes to the one before is skipped; the
+      // first element's end and the second's start stay
+      std::vector<Vec2> kept;
+      for (std::size_t i = 0; i < c.points.size(); ++i) {
+        const Vec2 gap = kept.empty() ? Vec2::Zero() : Vec2((c.points[i] - kept.back()).cwiseAbs());
+        if (kept.empty() || i + 1 == c.points.size() || gap.x() >= options_.mergeDistance ||
+            gap.y() >= options_.mergeDistance)
+          kept.push_back(c.points[i]);
+      }
+      c.points = kept;
+    }
     if (a.startUp && options_.startUpPerpendicular && !a.virtualDir)
       c = comp::CornerResult{
           {path.a + d * comp::leftOf(comp::tangentAt(path, false))}, false, false};

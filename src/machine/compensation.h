@@ -30,6 +30,7 @@ public:
     double arcGapLimit = 0;            // an arc corner with a smaller gap: the intersection
     bool startUpPerpendicular = false; // start-up ends on the next element's start perpendicular
     bool cancelPerpendicular = false;  // the cancel's element ends on its end perpendicular
+    double mergeDistance = 0;          // corner vectors closer than this on both axes are merged
   };
   CompensationStage() = default;
   explicit CompensationStage(Options o) : options_(o) {}

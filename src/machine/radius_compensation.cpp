@@ -17,6 +17,7 @@ CompensationStage::Options Interpreter::compensationOptions() const {
   CompensationStage::Options o;
   o.lookAheadBlocks = 2 + static_cast<int>(setting(profile_, setup_, Setting::CompLookAhead));
   o.interferenceCheck = setting(profile_, setup_, Setting::CompInterference, 1) == 1;
+  o.mergeDistance = setting(profile_, setup_, Setting::CompMergeDistance);
   const CompensationRules& rules = profile_.machine.compensation;
   if (rules.lookAheadBlocks > 0) o.lookAheadBlocks = rules.lookAheadBlocks;
   if (rules.outerCornerArcs) o.outer = comp::OuterCorner::Arc;
