@@ -64,6 +64,11 @@ MachineRules machineRules() {
   r.surfaceSpeedAxis = 0;                  // the N1030 axis: X (§3.15)
   r.setCoordinatesSIsSpindleLimit = false; // the ceiling is LIMS
   r.workOffsetNames = {"G54", "G55", "G56", "G57", "G58", "G59"};
+  // radius compensation (fms3000.md §4.2): outer corners on arcs (G14, the power-on state),
+  // start-up and cancel on the perpendiculars, up to 10 blocks without plane motion
+  r.compensation.outerCornerArcs = true;
+  r.compensation.startUpPerpendicular = r.compensation.cancelPerpendicular = true;
+  r.compensation.lookAheadBlocks = 11;
   return r;
 }
 

@@ -39,6 +39,7 @@ std::vector<SettingSpec> settings() {
       {S::CloseLoopMCode, "N0823", nullptr, 24, "N0823"},             // 000:9993
       {S::CompLookAhead, "N1404", nullptr, 0, "N1404 BK No. Interf"}, // 000:7593-7595
       {S::CompInterference, "N1403.IEN", nullptr, 1, "N1403 IEN"},    // 000:8229
+      {S::CompMergeDistance, "N1405", nullptr, 0, "N1405 DELTV"},     // 000:7700-7712
   };
 }
 

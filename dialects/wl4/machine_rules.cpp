@@ -34,6 +34,10 @@ MachineRules machineRules() {
   r.arcL = ArcLMeaning::None;            // L is a call, never an arc word
   r.workOffsetEndsSetCoordinates = true; // G92 is cancelled by G53-G59 (§3.11)
   r.workOffsetNames = {"G54", "G55", "G56", "G57", "G58", "G59"};
+  // radius compensation (wl4.md §4.2): an outer corner whose offsets leave a gap above Delt_L
+  // (0.01 mm [D]) is passed on an arc about the corner point, else at their intersection
+  r.compensation.outerCornerArcs = true;
+  r.compensation.arcGapLimit = 0.01;
   return r;
 }
 

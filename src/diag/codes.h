@@ -69,6 +69,10 @@ inline constexpr const char* IllegalChamfer = "2085";     // no plane element be
 inline constexpr const char* ChamferTooBig = "GCX074";    // does not fit on the elements
 inline constexpr const char* AngleLine = "GCX075";        // ,A outside a one-coordinate G0/G1
 inline constexpr const char* CompOnlyCode = "GCX076";     // G38/G39 without G41/G42
+// intersection calculations (nct.md §4.3)
+inline constexpr const char* IntersectionElement = "GCX077"; // no element to intersect with
+inline constexpr const char* IntersectionChoice = "GCX078";  // two points and no Q to choose
+inline constexpr const char* CornerArcBlock = "GCX079";      // G39 with motion words or a bad I J K
 // --- gcx: execution
 inline constexpr const char* NotImplemented = "GCX030";
 inline constexpr const char* UnknownGCodeAtRun = "GCX031";
@@ -89,10 +93,10 @@ inline constexpr const char* PathOutsideFolders = "GCX046";    // M98 <../x>, an
 inline constexpr const char* FeedPerRevolutionAtS0 = "GCX047"; // G95 move, spindle speed 0
 inline constexpr const char* ParameterMissing = "NCTX11";
 // --- WL4 (wl4.md)
-inline constexpr const char* Wl4Syntax = "GCX060";         // a WL4 block that does not parse
-inline constexpr const char* Wl4CallWord = "GCX061";       // L not nn or nnpp, or pp = 00
-inline constexpr const char* Wl4DuplicateLabel = "GCX062"; // a label twice in one program
-inline constexpr const char* Wl4ProgramName = "GCX063";    // a %name longer than 80
+inline constexpr const char* Wl4Syntax = "GCX060";           // a WL4 block that does not parse
+inline constexpr const char* Wl4CallWord = "GCX061";         // L not nn or nnpp, or pp = 00
+inline constexpr const char* Wl4DuplicateLabel = "GCX062";   // a label twice in one program
+inline constexpr const char* Wl4ProgramName = "GCX063";      // a %name longer than 80
 inline constexpr const char* Wl4FanucComment = "GCXW20";     // `(` where a word would start
 inline constexpr const char* Wl4WholeMillimetres = "GCXW21"; // X1030 is 1030 mm
 inline constexpr const char* Wl4FanucReturnLevel = "GCXW22"; // G98/G99

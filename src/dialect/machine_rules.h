@@ -45,6 +45,7 @@ enum class Setting : unsigned char {
   CompLookAhead,        // blocks radius compensation reads ahead beyond the 2 it always reads
   CompInterference,     // 1: a compensated move against its programmed direction is an alarm
   SetCoordinatesMode,   // 0: set-coordinates words are the tool's position in the new system
+  CompMergeDistance,    // mm: corner vectors closer than this on both axes are merged
 };
 
 /// Where the setup holds a setting in this dialect.
@@ -121,6 +122,12 @@ struct CompensationRules {
   std::vector<GAction> breakers;      // G codes (by action) whose block breaks the look-ahead
   std::vector<MAction> breakerMCodes; // M codes likewise
   bool lengthWordBreaks = false;      // a tool length word (H) likewise
+  /// The dialect's corner rules (docs/compensation.md, "Per dialect"); the defaults are NCT's.
+  bool outerCornerArcs = false; // outer corners on an arc of the radius about the corner point
+  double arcGapLimit = 0;       // mm: a smaller gap between the offsets meets at their intersection
+  bool startUpPerpendicular = false; // start-up ends on the next element's start perpendicular
+  bool cancelPerpendicular = false;  // the last element ends on its end perpendicular
+  int lookAheadBlocks = 0; // blocks read for the next plane element; 0: the CompLookAhead setting
 };
 
 /// The words of the automatic contour geometry (nct.md §4): a chamfer or a rounding between a

@@ -136,12 +136,31 @@ bool CompensationStage::event(const motion::Event& e, motion::Sink& out) {
   return true;
 }
 
+bool CompensationStage::cornerArcTowards(const Vec2& direction, motion::Sink& out) {
+  if (failure_ || !pending_) return false;
+  const Element& a = *pending_;
+  const Vec2 corner = a.path.b;
+  return release({corner + a.d * comp::leftOf(comp::tangentAt(a.path, true)),
+                  corner + a.d * comp::leftOf(direction.normalized())},
+                 true, out);
+}
+
+bool CompensationStage::endWaitingAt(const motion::Vec3& end) {
+  if (!pending_) return false;
+  const motion::PlaneAxes ax = motion::axesOf(plane_);
+  motion::Event& e = pending_->e;
+  e.end[ax.first] = end[ax.first], e.end[ax.second] = end[ax.second];
+  if (e.kind == Kind::Arc) e.endRadius = (planar(e.end) - planar(e.center)).norm();
+  pending_->path = pathOf(e);
+  return true;
+}
+
 bool CompensationStage::element(const motion::Event& e, motion::Sink& out) {
   const Path2 path = pathOf(e);
   const double d = side_ * radius_;
   if (cancelPending_) {
     cancelPending_ = false;
-    if (pending_ && blockIndex_ == cancelBlock_) {
+    if (pending_ && blockIndex_ == cancelBlock_ && !options_.cancelPerpendicular) {
       const auto c = comp::corner(pending_->path, path, pending_->d, pending_->d,
                                   comp::Join::Cancel, options_.outer, direction_);
       if (!release(c.points, c.arcAbout, out)) return false;
@@ -172,6 +191,24 @@ bool CompensationStage::element(const motion::Event& e, motion::Sink& out) {
       join = comp::Join::Direction, dSecond = d;
     const auto rule = cornerArc_ ? comp::OuterCorner::Arc : options_.outer;
     auto c = comp::corner(a.path, path, a.d, dSecond, join, rule, a.virtualDir);
+    if (c.arcAbout && c.points.size() == 2 &&
+        (c.points[1] - c.points[0]).norm() <= options_.arcGapLimit) // a nearly smooth corner
+      c = comp::corner(a.path, path, a.d, dSecond, join, comp::OuterCorner::TypeC, a.virtualDir);
+    if (!c.arcAbout && options_.mergeDistance > 0) { // nct.md §3.17.1, 000:7700-7712
+      // an inserted vector closer than DELTV on both axes to the one before is skipped; the
+      // first element's end and the second's start stay
+      std::vector<Vec2> kept;
+      for (std::size_t i = 0; i < c.points.size(); ++i) {
+        const Vec2 gap = kept.empty() ? Vec2::Zero() : Vec2((c.points[i] - kept.back()).cwiseAbs());
+        if (kept.empty() || i + 1 == c.points.size() || gap.x() >= options_.mergeDistance ||
+            gap.y() >= options_.mergeDistance)
+          kept.push_back(c.points[i]);
+      }
+      c.points = kept;
+    }
+    if (a.startUp && options_.startUpPerpendicular && !a.virtualDir)
+      c = comp::CornerResult{
+          {path.a + d * comp::leftOf(comp::tangentAt(path, false))}, false, false};
     if (a.hold) // G38: the start vector again at the end (nct.md §3.17.5)
       c = comp::CornerResult{{a.path.b + (a.start - a.path.a)}, false, false};
     if (c.noIntersection)

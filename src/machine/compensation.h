@@ -27,6 +27,10 @@ public:
     int lookAheadBlocks = 2; // blocks read beyond a plane element for its successor
     bool interferenceCheck = true;
     comp::OuterCorner outer = comp::OuterCorner::TypeC;
+    double arcGapLimit = 0;            // an arc corner with a smaller gap: the intersection
+    bool startUpPerpendicular = false; // start-up ends on the next element's start perpendicular
+    bool cancelPerpendicular = false;  // the cancel's element ends on its end perpendicular
+    double mergeDistance = 0;          // corner vectors closer than this on both axes are merged
   };
   CompensationStage() = default;
   explicit CompensationStage(Options o) : options_(o) {}
@@ -41,6 +45,9 @@ public:
   void zeroPlaneMove() { zeroMove_ = true; }
   /// G39: the next outer corner is passed on an arc of the radius about the corner point.
   void cornerArc() { cornerArc_ = true; }
+  /// G39 I J K: the waiting element ends on an arc of the radius about its end point, from its
+  /// end perpendicular to the perpendicular of `direction`. False when no element waits.
+  bool cornerArcTowards(const comp::Vec2& direction, motion::Sink& out);
   /// G38: this block's plane element ends with the vector it starts with.
   void holdVector() { holdBlock_ = blockIndex_; }
   /// A look-ahead breaker (nct.md §3.17.7): the waiting element ends on its programmed point,
@@ -48,6 +55,9 @@ public:
   void breakLookAhead(motion::Sink& out);
   /// One event of the programmed stream. False after a failure (failure()).
   bool event(const motion::Event& e, motion::Sink& out);
+  /// An intersection calculation (nct.md §4.3) moves the waiting element's programmed end to
+  /// `end` (in the plane; on its line or circle). False when no element waits.
+  bool endWaitingAt(const motion::Vec3& end);
   const std::optional<CompensationFailure>& failure() const { return failure_; }
   /// Compensation is on, or the tool is not yet back on the programmed path.
   bool engaged() const { return side_ != 0 || pending_ || displaced_; }

@@ -36,6 +36,15 @@ void ContourCornerStage::request(Kind kind, double size, motion::Plane plane) {
   plane_ = plane;
 }
 
+bool ContourCornerStage::endWaitingAt(const motion::Vec3& end) {
+  if (!held_) return false;
+  const motion::PlaneAxes ax = motion::axesOf(plane_);
+  held_->end[ax.first] = end[ax.first], held_->end[ax.second] = end[ax.second];
+  if (held_->kind == Move::Arc)
+    held_->endRadius = (planar(held_->end) - planar(held_->center)).norm();
+  return true;
+}
+
 bool ContourCornerStage::event(const motion::Event& e, motion::Sink& out) {
   if (failure_) return false;
   const bool planeMove =

@@ -18,6 +18,8 @@ public:
   void request(Kind kind, double size, motion::Plane plane);
   /// One event of the programmed stream. False after a failure (failure()).
   bool event(const motion::Event& e, motion::Sink& out);
+  /// An intersection calculation moves the waiting element's end (CompensationStage's twin).
+  bool endWaitingAt(const motion::Vec3& end);
   const std::optional<CompensationFailure>& failure() const { return failure_; }
 
 private:

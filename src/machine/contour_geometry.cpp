@@ -13,16 +13,13 @@
 namespace gcx::machine {
 
 bool Interpreter::contourGeometry(const BlockWords& w, Vec3& to) {
-  if (directionLine_ && !(w.angle && w.hasAxisWord()))
-    return fail(diag::code::NotImplemented, blockRange_,
-                "a line given by its direction alone must be followed by an over-determined line "
-                "(both coordinates and ,A); other intersection calculations are not implemented "
-                "yet (nct.md §4.3)");
+  bool over = false;
+  if (!intersection(w, to, over)) return false;
   if (!w.angle && !w.chamfer && !w.rounding) return true;
   const motion::PlaneAxes ax = motion::axesOf(state_.plane);
   const bool first = axisGiven(w, ax.first), second = axisGiven(w, ax.second);
   const bool line = state_.motion == GAction::Rapid || state_.motion == GAction::Linear;
-  if (w.angle) {
+  if (w.angle && !over) {
     // ,A: exactly one plane coordinate; the other follows from the direction (nct.md §4.2)
     if (!line)
       return fail(
@@ -32,39 +29,20 @@ bool Interpreter::contourGeometry(const BlockWords& w, Vec3& to) {
     if (!first && !second && compensating && !directionLine_) {
       // a line known by its direction only: it ends where the next, over-determined line
       // meets it (nct.md §4.3 line-line, TV21); nothing moves yet
+      if (w.chamfer || w.rounding)
+        return fail(diag::code::NotImplemented, (w.chamfer ? w.chamfer : w.rounding)->range,
+                    "a chamfer or rounding on a line given by its direction alone is not "
+                    "implemented yet");
       directionLine_ = DirectionLine{w.angle->number, from_, state_.motion, state_.feed};
       to = program_;
       return true;
     }
-    if (first && second && compensating && directionLine_) {
-      // over-determined: its coordinates are absolute, the intersection ends the previous line
-      to[ax.first] = coordinate(ax.first, *(w.axis[ax.first] ? w.axis[ax.first] : w.uvw[ax.first]));
-      to[ax.second] =
-          coordinate(ax.second, *(w.axis[ax.second] ? w.axis[ax.second] : w.uvw[ax.second]));
-      const DirectionLine d = *std::exchange(directionLine_, std::nullopt);
-      const double a1 = d.degrees * M_PI / 180, a2 = w.angle->number * M_PI / 180;
-      const double den = std::sin(a2 - a1);
-      if (std::fabs(den) < 1e-12)
-        return fail(diag::code::CompNoIntersection, w.angle->range,
-                    "the two lines are parallel: no intersection point (nct.md §4.3)");
-      const double dx = to[ax.first] - program_[ax.first], dy = to[ax.second] - program_[ax.second];
-      const double s = (dx * std::sin(a2) - dy * std::cos(a2)) / den;
-      Vec3 meet = program_;
-      meet[ax.first] += s * std::cos(a1);
-      meet[ax.second] += s * std::sin(a1);
-      const motion::Provenance here = from_;
-      from_ = d.from;
-      emitLine(d.motion == GAction::Rapid ? motion::Kind::Rapid : motion::Kind::Feed,
-               toMachine(meet), extra_, d.feed);
-      from_ = here;
-      program_ = meet;
-      return true;
-    }
     if (first == second)
-      return fail(diag::code::NotImplemented, w.angle->range,
-                  fmt::format("{} with {} plane coordinates is an intersection calculation, which "
-                              "is not implemented yet (nct.md §4.3)",
-                              w.angle->address, first ? "both" : "no"));
+      return fail(diag::code::AngleLine, w.angle->range,
+                  fmt::format("{} completes one plane coordinate of a line; without either it "
+                              "is a line by its direction for an intersection, only under "
+                              "G41/G42 (nct.md §4.2, §4.3)",
+                              w.angle->address));
     const double a = w.angle->number * M_PI / 180.0;
     const double c = std::cos(a), s = std::sin(a);
     if (std::fabs(first ? c : s) < 1e-12)
@@ -96,12 +74,19 @@ bool Interpreter::contourGeometry(const BlockWords& w, Vec3& to) {
                      m(ax.first, ax.second) * m(ax.second, ax.first);
   const double col1 = std::hypot(m(ax.first, ax.first), m(ax.second, ax.first));
   const double col2 = std::hypot(m(ax.first, ax.second), m(ax.second, ax.second));
-  if (std::fabs(col1 - col2) > 1e-9 * col1)
-    return fail(diag::code::NotImplemented, word->range,
-                "a chamfer or rounding under scaling with unequal factors is not implemented yet");
+  double factor = std::sqrt(std::fabs(det));
+  if (std::fabs(col1 - col2) > 1e-9 * col1) {
+    // unequal factors: a rounding takes their mean (000:8694-8697); the manual gives no
+    // rule for a chamfer
+    if (w.chamfer)
+      return fail(diag::code::NotImplemented, word->range,
+                  "a chamfer under scaling with unequal factors is not implemented (the manual "
+                  "gives a rule only for ,R)");
+    factor = (col1 + col2) / 2;
+  }
   corners_.request(w.chamfer ? ContourCornerStage::Kind::Chamfer
                              : ContourCornerStage::Kind::Rounding,
-                   mm(word->number) * std::sqrt(std::fabs(det)), state_.plane);
+                   mm(word->number) * factor, state_.plane);
   return true;
 }
 

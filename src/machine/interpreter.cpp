@@ -172,6 +172,7 @@ void Interpreter::emit(motion::Event e) {
     stopped_ = true;
     return;
   }
+  if (e.kind == Kind::Rapid || e.kind == Kind::Feed || e.kind == Kind::Arc) rememberPlaneMove(e);
   // chamfers and roundings, then radius compensation, then the sink
   struct ToCompensation : motion::Sink {
     CompensationStage& comp;
@@ -255,6 +256,7 @@ bool Interpreter::execute(const ir::Block& block, const motion::Provenance& from
   from_ = from;
   blockRange_ = block.range;
   blockMoves_ = 0;
+  ++blockSerial_;
   return executeBlock(block) && !stopped_;
 }
 
@@ -979,6 +981,12 @@ bool Interpreter::move(const BlockWords& w) {
                   fmt::format("arcs in the {} plane of parallel axes are not implemented yet",
                               state_.planeAxes));
     const motion::PlaneAxes ax = motion::axesOf(state_.plane);
+    if (overCentre_) { // an over-determined circle (nct.md §4.3)
+      if (state_.feed <= 0)
+        return fail(diag::code::MissingData, blockRange_, "arc without a feed rate F");
+      const Vec3 centre = *std::exchange(overCentre_, std::nullopt);
+      return arcTo(to, centre, state_.motion == GAction::ArcCW, 1, extraTo, state_.feed);
+    }
     return arc(w, to, extraTo, axisGiven(w, ax.first) || axisGiven(w, ax.second));
   }
   case GAction::FilletCW:
@@ -1345,8 +1353,9 @@ void Interpreter::message(const std::string& text, const motion::Provenance& fro
 void Interpreter::finish() {
   if (ended_) return;
   if (directionLine_) { // a line by ,A alone never met the line that ends it (nct.md §4.3)
-    fail(diag::code::NotImplemented, blockRange_,
-         "the program ends after a line given by its direction alone");
+    fail(diag::code::IntersectionElement, blockRange_,
+         "the program ends after a line given by its direction alone (,A): no over-determined "
+         "line or circle ends it (nct.md §4.3)");
     return;
   }
   ended_ = true;

@@ -291,10 +291,16 @@ private:
   CompensationStage::Options compensationOptions() const;
   /// The block's G40/G41/G42, D, plane and look-ahead breakers, handed to the stage.
   bool radiusCompensation(const BlockWords& w, const ModalState& before);
+  /// G39 I J K: the corner arc towards the perpendicular of the vector, now.
+  bool cornerArcTowards(const BlockWords& w, const ir::Word& g39);
   /// Reports a stage's failure as a located error; always false.
   bool compensationFailed(const CompensationFailure& f);
   /// ,A completes `to`; ,C and ,R are requested from the corner stage (contour_geometry.cpp).
   bool contourGeometry(const BlockWords& w, Vec3& to);
+  /// An over-determined line or circle (nct.md §4.3, contour_intersections.cpp): ends the
+  /// element before at the intersection, starts there (`over`), `to` its absolute end.
+  bool intersection(const BlockWords& w, Vec3& to, bool& over);
+  void rememberPlaneMove(const motion::Event& e);
   void emitModalChanges(const ModalState& before);
   void emit(motion::Event e);
 
@@ -339,7 +345,14 @@ private:
     double feed;
   };
   std::optional<DirectionLine> directionLine_;
-  int keptSide_ = 0; // the side and radius of the last RadiusComp event
+  struct PlaneMove { // the last move in the plane (machine frame), for intersections (§4.3)
+    comp::Path2 path;
+    std::uint64_t block = 0;
+  };
+  std::optional<PlaneMove> lastPlaneMove_;
+  std::uint64_t blockSerial_ = 0;
+  std::optional<Vec3> overCentre_; // an over-determined circle's centre (program frame)
+  int keptSide_ = 0;               // the side and radius of the last RadiusComp event
   double keptRadius_ = 0;
   bool ended_ = false;
   bool speedProgrammed_ = false; // an S word was given (before it, the speed is unknown)

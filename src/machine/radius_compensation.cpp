@@ -17,6 +17,13 @@ CompensationStage::Options Interpreter::compensationOptions() const {
   CompensationStage::Options o;
   o.lookAheadBlocks = 2 + static_cast<int>(setting(profile_, setup_, Setting::CompLookAhead));
   o.interferenceCheck = setting(profile_, setup_, Setting::CompInterference, 1) == 1;
+  o.mergeDistance = setting(profile_, setup_, Setting::CompMergeDistance);
+  const CompensationRules& rules = profile_.machine.compensation;
+  if (rules.lookAheadBlocks > 0) o.lookAheadBlocks = rules.lookAheadBlocks;
+  if (rules.outerCornerArcs) o.outer = comp::OuterCorner::Arc;
+  o.arcGapLimit = rules.arcGapLimit;
+  o.startUpPerpendicular = rules.startUpPerpendicular;
+  o.cancelPerpendicular = rules.cancelPerpendicular;
   return o;
 }
 
@@ -118,13 +125,16 @@ bool Interpreter::radiusCompensation(const BlockWords& w, const ModalState& befo
   for (GAction a : {GAction::CornerArc, GAction::VectorHold}) {
     const ir::Word* g = w.findAction(a);
     if (!g) continue;
-    if (a == GAction::CornerArc && (w.hasAxisWord() || w.ijk[0] || w.ijk[1] || w.ijk[2]))
-      return fail(diag::code::NotImplemented, g->range,
-                  "G39 stands in a block of its own; its I J K end vector is not implemented yet");
-    if (a == GAction::CornerArc)
-      comp_.cornerArc();
-    else
+    if (a == GAction::VectorHold) {
       comp_.holdVector();
+    } else if (w.hasAxisWord()) {
+      return fail(diag::code::CornerArcBlock, g->range,
+                  "G39 stands in a block of its own, without axis words (nct.md §3.17.5)");
+    } else if (w.ijk[0] || w.ijk[1] || w.ijk[2]) {
+      if (!cornerArcTowards(w, *g)) return false;
+    } else {
+      comp_.cornerArc();
+    }
   }
   if (comp_.failure()) return compensationFailed(*comp_.failure());
   comp_.setMode(state_.plane, side, radius, direction);
@@ -133,6 +143,31 @@ bool Interpreter::radiusCompensation(const BlockWords& w, const ModalState& befo
     const Vec3 to = target(w, true);
     if (to[ax.first] == program_[ax.first] && to[ax.second] == program_[ax.second])
       comp_.zeroPlaneMove();
+  }
+  return true;
+}
+
+// G39 I J K (nct.md §3.17.5, 000:8176-8192): the arc about the corner ends on the perpendicular
+// of the vector I J K, which mirror and rotation turn and scaling does not (only its direction
+// counts).
+bool Interpreter::cornerArcTowards(const BlockWords& w, const ir::Word& g39) {
+  const motion::PlaneAxes ax = motion::axesOf(state_.plane);
+  if (w.ijk[ax.normal])
+    return fail(diag::code::CornerArcBlock, w.ijk[ax.normal]->range,
+                fmt::format("{} is outside the selected plane (nct.md §3.17.5)",
+                            w.ijk[ax.normal]->address));
+  Vec3 v = Vec3::Zero();
+  for (int a : {ax.first, ax.second})
+    if (w.ijk[a]) v[a] = w.ijk[a]->number;
+  v = transforms_.matrix().linear() * v;
+  const comp::Vec2 direction(v[ax.first], v[ax.second]);
+  if (direction.norm() < 1e-12)
+    return fail(diag::code::CornerArcBlock, g39.range, "G39 with I J K of length zero");
+  if (!comp_.cornerArcTowards(direction, *sink_)) {
+    if (comp_.failure()) return compensationFailed(*comp_.failure());
+    return fail(diag::code::CornerArcBlock, g39.range,
+                "G39 I J K ends the element before it on an arc, and there is none in the plane "
+                "waiting (nct.md §3.17.5)");
   }
   return true;
 }

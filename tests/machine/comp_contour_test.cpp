@@ -61,6 +61,17 @@ TEST(CompNctSpec_7, TV21_IntersectionLineLine) {
   EXPECT_EQ(compMotion(square.motion()), (V{"L 10,0,0 F100", "L 10,10,0 F100"})) << square.rendered;
 }
 
+// nct.md §3.15 (000:8694-8697): under unequal factors a rounding is ,R * (I+J)/2 = 6.25 in the
+// scaled path (the manual's own example); a chamfer has no rule and stays an error.
+TEST(CompNctSpec_4_1, RoundingUnderUnequalScaling) {
+  const std::string head = "G17 G90 G0 X0 Y0\nG51 X0 Y0 Z0 I0.5 J0.75 K1.25\n";
+  ProgramRun r = runNct(head + "G1 X100 ,R10 F100\nY100\nX10\n");
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(compMotion(r.motion()), (V{"L 43.75,0,0 F100", "CCW 50,6.25,0 C43.75,6.25 r6.25 θ90",
+                                       "L 50,75,0 F100", "L 5,75,0 F100"}));
+  EXPECT_EQ(runNct(head + "G1 X100 ,C10 F100\nY100\n").errors, V{"3:9 GCX030"});
+}
+
 TEST(CompNctSpec_4_1, ChamferAndRoundingInOneBlock2082) {
   ProgramRun r = runNct("G17 G1 X30 ,C5 ,R5 F100\nY30\n");
   EXPECT_EQ(r.errors, V{"1:16 2082"}) << r.rendered;

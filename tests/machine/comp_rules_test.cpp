@@ -93,6 +93,28 @@ TEST(CompNctSpec_3_17_1, InnerCornerWithoutIntersection2047) {
   EXPECT_EQ(r.errors, V{"3:1 2047"}) << r.rendered;
 }
 
+// nct.md §3.17.1 (000:7700-7712): an outer corner turning by 91 degrees is acute: type C
+// extends the end and start vectors by r, and their ends (-5,35) and (-4.912,35.0865) lie
+// 0.09 apart. With
+// N1405 DELTV = 0.2 the second is skipped; the second element's start vector stays.
+TEST(CompNctSpec_3_17_1, Deltv1405MergesCloseVectors) {
+  const std::string program = "G17 G90 G0 X0 Y-10\nG41 G1 X0 Y0 D1 F100\nY30\nX30 Y29.476342\n"
+                              "G40 X60 Y28.952685\n";
+  ProgramRun typeC = runNct(program, compSetup(5));
+  ASSERT_TRUE(typeC.errors.empty()) << typeC.rendered;
+  EXPECT_EQ(compMotion(typeC.motion()),
+            (V{"R 0,-10,0", "L -5,0,0 F100", "L -5,30,0 F100", "L -5,35,0 F100",
+               "L -4.912,35.0865,0 F100", "L 0.0873,34.9992,0 F100", "L 30.0873,34.4756,0 F100",
+               "L 60,28.9527,0 F100"}));
+  machine::Setup merging = compSetup(5);
+  merging.parameters["N1405"] = 0.2;
+  ProgramRun merged = runNct(program, merging);
+  ASSERT_TRUE(merged.errors.empty()) << merged.rendered;
+  EXPECT_EQ(compMotion(merged.motion()),
+            (V{"R 0,-10,0", "L -5,0,0 F100", "L -5,30,0 F100", "L -5,35,0 F100",
+               "L 0.0873,34.9992,0 F100", "L 30.0873,34.4756,0 F100", "L 60,28.9527,0 F100"}));
+}
+
 TEST(CompNctSpec_3_17_6, Interference2049) {
   ProgramRun r = runNct("G17 G0 X-10 Y-10\nG41 G1 X0 Y0 D1 F100\nX10\nY1\nX0\nG40 G0 X-10 Y10\n",
                         compSetup(5));
