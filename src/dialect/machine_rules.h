@@ -45,6 +45,8 @@ enum class Setting : unsigned char {
   CompLookAhead,        // blocks radius compensation reads ahead beyond the 2 it always reads
   CompInterference,     // 1: a compensated move against its programmed direction is an alarm
   SetCoordinatesMode,   // 0: set-coordinates words are the tool's position in the new system
+  ModalLevelCycles,     // bit n: level drilling cycle 81+n repeats after each block with an axis
+                        // word until it is cancelled
 };
 
 /// Where the setup holds a setting in this dialect.

@@ -270,6 +270,7 @@ bool Interpreter::executeBlock(const ir::Block& block) {
       if (const GCodeSpec* spec = profile_.gcode(g.number);
           spec && spec->action == GAction::LevelDrillCycle)
         return levelCycleBlock(block, g, *spec);
+  if (const auto repeated = levelCycleRepeat(block)) return *repeated;
   BlockWords w;
   if (const ir::Word* bad = sortWords(block, profile_, w))
     return fail(diag::code::ExpressionNotExpanded, bad->range,

@@ -131,6 +131,39 @@ TEST(Fms3000Vectors_8, T12_FourHolesWithRememberedParameters) {
                "L 65,0,-10 F100", "R 65,0,0.5", "R 65,0,10"}));
 }
 
+// E38 under N3023 = {81} (bit 0), from Z20: each later block with an axis word runs, then the
+// hole with the remembered parameters; G80 ends the repetition, not N3023
+TEST(Fms3000Vectors_8, T13_ModalCycleUnderN3023) {
+  machine::Setup s = withParameter("N3023", 1);
+  s.initialPosition = {0, 0, 20};
+  EXPECT_EQ(
+      run("G90X100G81U5Z-10I10F50 · X150 · X200 · G80 · X250G81U5Z-10F50 · X300 · X350 · "
+          "X400 · G80 · M30",
+          s),
+      (V{"R 100,0,20",      "R 100,0,5",       "L 100,0,-10 F50", "R 100,0,5",       "R 100,0,10",
+         "R 150,0,10",      "R 150,0,5",       "L 150,0,-10 F50", "R 150,0,5",       "R 150,0,10",
+         "R 200,0,10",      "R 200,0,5",       "L 200,0,-10 F50", "R 200,0,5",       "R 200,0,10",
+         "R 250,0,10",      "R 250,0,5",       "L 250,0,-10 F50", "R 250,0,5",       "R 300,0,5",
+         "L 300,0,-10 F50", "R 300,0,5",       "R 350,0,5",       "L 350,0,-10 F50", "R 350,0,5",
+         "R 400,0,5",       "L 400,0,-10 F50", "R 400,0,5"}));
+}
+
+TEST(Fms3000Cycles_5_1, N3023NamesTheCyclesThatRepeat) {
+  machine::Setup s = s0();
+  s.initialPosition = {0, 0, 10};
+  const std::string program = "G81 U2 Z-5 F100 · X20 · M30";
+  const V once{"R 0,0,2", "L 0,0,-5 F100", "R 0,0,2", "R 20,0,2"};
+  EXPECT_EQ(run(program, s), once); // N3023 empty: one-shot
+  s.parameters["N3023"] = 2;        // bit 1: G82 only
+  EXPECT_EQ(run(program, s), once);
+  s.parameters["N3023"] = 1 + 4; // G81 and G83
+  EXPECT_EQ(run(program, s),
+            (V{"R 0,0,2", "L 0,0,-5 F100", "R 0,0,2", "R 20,0,2", "L 20,0,-5 F100", "R 20,0,2"}));
+  // a block without an axis word does not drill (§5.1, the open question of §10)
+  EXPECT_EQ(run("G81 U2 Z-5 F100 · F50 · G80 X20 · M30", s),
+            (V{"R 0,0,2", "L 0,0,-5 F100", "R 0,0,2", "R 20,0,2"}));
+}
+
 TEST(Fms3000Vectors_8, T14_DeepDrillingAndTapping) {
   EXPECT_EQ(
       run("G0Z10 · M3S500 · G83U2Z-10V4W1F100 · G80 · G84U5Z-20F300E5 · G80 · M30"),
