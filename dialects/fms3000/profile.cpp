@@ -82,7 +82,7 @@ std::vector<GCodeSpec> gcodes() {
       {340, 0, "synchronise with the encoder zero mark"},
       // G35 ends group 06: polar mode and the G37 rotation (§10 Q19)
       {350, 6, "Cartesian coordinates", A::RotateOff},
-      {360, 6, "polar coordinates"},
+      {360, 6, "polar coordinates", A::PolePolar},
       {370, 6, "rotation of the coordinate system", A::RotateOn},
       {380, 0, "no single-block stop", A::Modeless},
       {390, 0, "Stop button inhibited", A::Modeless},

@@ -89,10 +89,10 @@ inline constexpr const char* PathOutsideFolders = "GCX046";    // M98 <../x>, an
 inline constexpr const char* FeedPerRevolutionAtS0 = "GCX047"; // G95 move, spindle speed 0
 inline constexpr const char* ParameterMissing = "NCTX11";
 // --- WL4 (wl4.md)
-inline constexpr const char* Wl4Syntax = "GCX060";         // a WL4 block that does not parse
-inline constexpr const char* Wl4CallWord = "GCX061";       // L not nn or nnpp, or pp = 00
-inline constexpr const char* Wl4DuplicateLabel = "GCX062"; // a label twice in one program
-inline constexpr const char* Wl4ProgramName = "GCX063";    // a %name longer than 80
+inline constexpr const char* Wl4Syntax = "GCX060";           // a WL4 block that does not parse
+inline constexpr const char* Wl4CallWord = "GCX061";         // L not nn or nnpp, or pp = 00
+inline constexpr const char* Wl4DuplicateLabel = "GCX062";   // a label twice in one program
+inline constexpr const char* Wl4ProgramName = "GCX063";      // a %name longer than 80
 inline constexpr const char* Wl4FanucComment = "GCXW20";     // `(` where a word would start
 inline constexpr const char* Wl4WholeMillimetres = "GCXW21"; // X1030 is 1030 mm
 inline constexpr const char* Wl4FanucReturnLevel = "GCXW22"; // G98/G99
@@ -159,5 +159,6 @@ inline constexpr const char* FmsUnusedE = "GCXW10";          // E without G04 or
 inline constexpr const char* FmsFanucHabit = "GCXW11"; // a Fanuc spelling with another meaning (§9)
 inline constexpr const char* FmsCycleParameters = "FMSX02"; // cycle words wrong (§5, 001:3912-3975)
 inline constexpr const char* FmsCallAndEnd = "FMSX03";      // P with M02/M30/M98 (§1.4, §10 Q21)
+inline constexpr const char* FmsPolarRule = "FMSX04"; // G36 polar rules (§3.11, 001:3856-3859)
 
 } // namespace gcx::diag::code

@@ -104,6 +104,8 @@ enum class GAction : unsigned char {
   ImplicitMinus,       // ... by -|travel| (FMS G48); on an arc, a quarter circle of that radius
   LevelDrillCycle,     // a drilling cycle by U/Z/I levels whose parameters follow its code (FMS
                        // G81-G88); arg = the cycle number (cycles/level_drilling.h)
+  PolePolar,           // polar coordinates about a pole the plane's axis words set: I the radius,
+                       // A the angle from the first plane axis (FMS G36, machine/pole_polar.cpp)
   CornerArc,           // radius compensation: an arc of the tool radius at the next outer corner
   VectorHold,          // radius compensation: the block ends with the vector it starts with
 };

@@ -271,6 +271,7 @@ bool Interpreter::executeBlock(const ir::Block& block) {
           spec && spec->action == GAction::LevelDrillCycle)
         return levelCycleBlock(block, g, *spec);
   if (const auto repeated = levelCycleRepeat(block)) return *repeated;
+  if (const auto polar = polePolarBlock(block)) return *polar;
   BlockWords w;
   if (const ir::Word* bad = sortWords(block, profile_, w))
     return fail(diag::code::ExpressionNotExpanded, bad->range,

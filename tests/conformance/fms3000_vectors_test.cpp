@@ -260,6 +260,37 @@ TEST(Fms3000Vectors_8, T21_ScaleFactorsPerAxisAboutTheWorkOrigin) {
             (V{"L 20,10,0 F100", "L 10,5,0 F100"}));
 }
 
+TEST(Fms3000Vectors_8, T22_PolarCoordinatesAboutAPole) {
+  EXPECT_EQ(run("G36X10Y10 · G1I20A30F100 · I20A90 · G3I20A180R20 · G35 · M30"),
+            (V{"L 27.3205,20,0 F100", "L 10,30,0 F100", "CCW -10,10,0 C10,10 r20 θ90"}));
+}
+
+TEST(Fms3000Polar_3_11, TheRadiusOrTheAngleAloneKeepsTheOther) {
+  // G91 has no effect on polar words or the pole; A alone keeps the distance, I alone the angle
+  EXPECT_EQ(run("G91 · G36X0Y0 · G1I10A0F100 · A90 · I5 · G35 · X1 · M30"),
+            (V{"L 10,0,0 F100", "L 0,10,0 F100", "L 0,5,0 F100", "L 1,5,0 F100"}));
+}
+
+TEST(Fms3000Polar_3_11, ThePlaneNamesThePoleAndTheAngleStartsOnItsFirstAxis) {
+  // G18: the plane is Z-X, A is measured from Z
+  EXPECT_EQ(run("G18 · G36Z0X0 · G1I10A90F100 · I10A0 · G35 · M30"),
+            (V{"L 10,0,0 F100", "L 0,0,10 F100"}));
+}
+
+TEST(Fms3000Polar_3_11, G37EndsPolarCoordinatesLikeG35) {
+  EXPECT_EQ(run("G36X0Y0 · G1I10A90F100 · G37X0Y0A0 · X5 · M30"),
+            (V{"L 0,10,0 F100", "L 5,10,0 F100"}));
+}
+
+TEST(Fms3000Polar_3_11, BrokenPolarRulesAreLocatedErrors) {
+  EXPECT_EQ(errorsOf("G36X10"), V{"main.fms:1:1 FMSX04"});       // no pole on Y
+  EXPECT_EQ(errorsOf("G36X10Y10Z5"), V{"main.fms:1:10 FMSX04"}); // pole not in the plane
+  EXPECT_EQ(errorsOf("G36X0Y0 · G1I20A30Z5F100"), V{"main.fms:2:9 FMSX04"}); // planar only
+  EXPECT_EQ(errorsOf("G36X0Y0 · G1X5F100"), V{"main.fms:2:3 FMSX04"});    // X Y are not polar words
+  EXPECT_EQ(errorsOf("G36X0Y0 · G1I-5A0F100"), V{"main.fms:2:3 FMSX04"}); // a negative radius
+  EXPECT_EQ(errorsOf("G36X0Y0 · G18"), V{"main.fms:2:1 FMSX04"});         // plane change (001:3859)
+}
+
 TEST(Fms3000Vectors_8, T23_RepeatedFragmentThenACall) {
   // L counts the runs of the fragment (§10 Q2); the G25 block itself runs once
   const MacroRun r = runFms({{"main.fms", "G91G25L3\r\nG1X10F100\r\nM25\r\nG90X0P19\r\nM30\r\n"},
