@@ -243,6 +243,8 @@ private:
   std::optional<bool> levelCycleRepeat(const ir::Block& block);
   /// The hole of the level cycle levelCycle_ with levelWords_, from the current position.
   bool levelHole(const SourceRange& code);
+  /// The turning cycle levelCycle_ (G150-G167) with levelWords_ (machine/level_turning.cpp).
+  bool levelTurning(const SourceRange& code);
   /// A block that sets the pole (GAction::PolePolar) or moves by I radius and A angle about it:
   /// run here, with the polar words turned into plane axis words; nullopt for any other block.
   std::optional<bool> polePolarBlock(const ir::Block& block);
@@ -335,6 +337,7 @@ private:
   int levelCycle_ = 0;                        // the level drilling cycle whose words are kept
   std::map<char, double> levelWords_;         // its parameters, remembered until G80 or another
   bool repeatingLevelCycle_ = false;          // inside the block that repeats a modal cycle
+  bool levelRapidFlag_ = false;               // `G0` among a turning cycle's parameters
   std::optional<std::array<double, 2>> pole_; // the polar pole on the plane's two axes (G36)
   bool polarRewritten_ = false;               // running a polar block's plane axis words
   std::optional<double> pendingDwell_; // seconds, run after the block's motion (dwellAfterMotion)

@@ -22,11 +22,17 @@ bool Interpreter::levelCycleBlock(const ir::Block& block, const ir::Word& code,
   std::erase_if(before.words, [&](const ir::Word& w) { return w.order >= code.order; });
   if (!before.words.empty() && !executeBlock(before)) return false;
   if (levelCycle_ != spec.arg) levelWords_.clear();
+  if (spec.arg == 166 || spec.arg == 167) levelWords_.clear(); // one block each (§8 T26, T27)
+  levelRapidFlag_ = false;
   levelCycle_ = spec.arg;
   if (spec.group > 0 && spec.group < static_cast<int>(modalCodes_.size()))
     modalCodes_[spec.group] = spec.code10;
   for (const ir::Word& w : block.words) {
     if (w.order <= code.order) continue;
+    if (w.is('G') && w.number == 0 && spec.arg >= 150) { // the turning cycles' rapid flag
+      levelRapidFlag_ = true;
+      continue;
+    }
     if (w.address.size() != 1 || w.is('G'))
       return fail(diag::code::ForbiddenAddress, w.range,
                   fmt::format("{} is no parameter of G{}", w.address, spec.arg));
@@ -36,6 +42,7 @@ bool Interpreter::levelCycleBlock(const ir::Block& block, const ir::Word& code,
 }
 
 bool Interpreter::levelHole(const SourceRange& code) {
+  if (levelCycle_ >= 150) return levelTurning(code);
   const motion::PlaneAxes ax = motion::axesOf(state_.plane);
   cycles::LevelDrillRequest req;
   req.cycle = levelCycle_;

@@ -321,6 +321,66 @@ TEST(Fms3000Vectors_8, T24_P19AndP019AreDifferentPrograms) {
   EXPECT_EQ(r.motion(), (V{"L 1,0,0 F100", "L 1,1,0 F100", "END"}));
 }
 
+// The lathe vectors run under G18 with X along slot 0; the motion is in machine coordinates,
+// so a diameter-programmed X (N7006 = 1) shows as its radius: X94 is 47.
+machine::Setup diameterX() {
+  return withParameter("N7006", 1);
+}
+
+TEST(Fms3000Vectors_8, T26_ChamfersByG166) {
+  EXPECT_EQ(run("G18 G0 X120 Z0 · N1G0Z-170 · N2G1X100F1.2 · N3G166Z-70R-3 · N4G166X50R5 · "
+                "N5G166Z0R-2 · M30",
+                diameterX()),
+            (V{"R 60,0,0", "R 60,0,-170", "L 50,0,-170 F1.2", "L 50,0,-73 F1.2", "L 47,0,-70 F1.2",
+               "L 30,0,-70 F1.2", "L 25,0,-65 F1.2", "L 25,0,-2 F1.2", "L 23,0,0 F1.2"}));
+}
+
+TEST(Fms3000Vectors_8, T27_FilletsByG167) {
+  EXPECT_EQ(run("G18 G0 X120 Z0 · N1G0Z-170 · N2G1X100F1.2 · N3G167Z-70R-4 · N4G167X50R7 · "
+                "N5G167Z0R-5 · M30",
+                diameterX()),
+            (V{"R 60,0,0", "R 60,0,-170", "L 50,0,-170 F1.2", "L 50,0,-74 F1.2",
+               "CW 46,0,-70 C-74,46 r4 θ90", "L 32,0,-70 F1.2", "CCW 25,0,-63 C-63,32 r7 θ90",
+               "L 25,0,-5 F1.2", "CW 20,0,0 C-5,20 r5 θ90"}));
+}
+
+TEST(Fms3000Vectors_8, T30_SinglePassTurningWithACone) {
+  EXPECT_EQ(run("G18G90G0X30Z2 · G150X20Z-30P10Q25F100 · M30"),
+            (V{"R 30,0,2", "L 20,0,2 F100", "L 20,0,-20 F100", "L 25,0,-30 F100", "L 30,0,-30 F100",
+               "R 30,0,2"}));
+}
+
+TEST(Fms3000Vectors_8, T31_DeepDrillingAlongZThenTheFinalX) {
+  EXPECT_EQ(run("G18G90G0X0Z5 · G154U1Z-20V8W1F50X10 · M30"),
+            (V{"R 0,0,5", "R 0,0,1", "L 0,0,-7 F50", "R 0,0,1", "R 0,0,-6", "L 0,0,-15 F50",
+               "R 0,0,1", "R 0,0,-14", "L 0,0,-20 F50", "R 0,0,1", "R 10,0,1"}));
+}
+
+TEST(Fms3000Turning_5_3, G150WithoutAConeAndWithTheRapidFlag) {
+  // G0 after the cycle code makes segment 1 a rapid and leaves the modal G1 alone
+  EXPECT_EQ(run("G18G90G1X30Z2F100 · G150X20Z-30G0 · X31 · M30"),
+            (V{"L 30,0,2 F100", "R 20,0,2", "L 20,0,-30 F100", "L 30,0,-30 F100", "R 30,0,2",
+               "L 31,0,2 F100"}));
+  // under G91 the positions are distances from the start point
+  EXPECT_EQ(run("G18G90G0X30Z2 · G91G150X-10Z-32F100 · M30"),
+            (V{"R 30,0,2", "L 20,0,2 F100", "L 20,0,-30 F100", "L 30,0,-30 F100", "R 30,0,2"}));
+}
+
+TEST(Fms3000Turning_5_3, G160IsTheChipBreakingSequenceAlongZ) {
+  EXPECT_EQ(run("G18G90G0X0Z5 · G160U1Z-20V8W1F50 · M30"),
+            (V{"R 0,0,5", "R 0,0,1", "L 0,0,-7 F50", "R 0,0,-6", "L 0,0,-15 F50", "R 0,0,-14",
+               "L 0,0,-20 F50", "R 0,0,1"}));
+}
+
+TEST(Fms3000Turning_5_3, BadTurningCycleWordsAreLocatedErrors) {
+  EXPECT_EQ(errorsOf("G18 G0 X10 Z0 · G166Z-2R-3"), V{"main.fms:2:1 FMSX02"});  // travel < R
+  EXPECT_EQ(errorsOf("G17 G0 X10 Z0 · G167Z-20R-3"), V{"main.fms:2:1 FMSX02"}); // not in G18
+  EXPECT_EQ(errorsOf("G18 · G150X20Z-30P10F100"), V{"main.fms:2:1 FMSX02"});    // P without Q
+  EXPECT_EQ(errorsOf("G18 · G150X20F100"), V{"main.fms:2:1 FMSX02"});           // no Z
+  EXPECT_EQ(errorsOf("G18 · G154U1Z-20V8F50"), V{"main.fms:2:1 FMSX02"});       // no W
+  EXPECT_EQ(errorsOf("G18 · G150X20Z-30R1F100"), V{"main.fms:2:1 FMSX02"}); // R is no word of G150
+}
+
 // The negative vectors: each raises a located error (X1E3 a warning).
 TEST(Fms3000Vectors_8, NegativeArcByRadiusZero) {
   EXPECT_EQ(errorsOf("G2X10R0"), V{"main.fms:1:6 GCX037"});
