@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <fmt/format.h>
 #include <map>
 
 #include "differential/twin_driver.h"
@@ -60,6 +62,25 @@ TEST_P(Fms3000Differential, Rs274ReproducesTheCanonicalOutput) {
   const MacroRun ours = runProgram(GetParam());
   ASSERT_TRUE(ours.errors.empty()) << ours.rendered;
   expectRs274ReproducesTheCanonicalOutput(ours.events);
+}
+
+TEST_P(Fms3000Differential, ExpandedToFms3000ItMovesTheSame) {
+  // the round trip of issue 12: parse -> `gcx expand --to fms3000` (cycles kept, calls and
+  // repeats expanded) -> parse gives the same motion
+  const fs::path out = fs::temp_directory_path() / ("gcx-fms-roundtrip-" + GetParam() + ".fms");
+  const fs::path setup = folder() / (GetParam() + ".setup.json");
+  const std::string command =
+      fmt::format("cd {} && {} expand {}.fms --to fms3000 {} -o {} >/dev/null 2>&1",
+                  folder().string(), GCX_BINARY, GetParam(),
+                  fs::exists(setup) ? "--setup " + setup.string() : std::string(), out.string());
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  const std::string text = readFile(out);
+  fs::remove(out);
+  const MacroRun a = runProgram(GetParam());
+  const MacroRun b = runFms(text, setupOf(GetParam()));
+  ASSERT_TRUE(a.errors.empty()) << a.rendered;
+  ASSERT_TRUE(b.errors.empty()) << b.rendered << text;
+  EXPECT_EQ(b.motion(), a.motion()) << text;
 }
 
 INSTANTIATE_TEST_SUITE_P(Fms3000, Fms3000Differential, testing::ValuesIn(names()),
