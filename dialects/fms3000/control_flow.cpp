@@ -1,5 +1,7 @@
 #include "dialects/fms3000/control_flow.h"
 
+#include "dialects/fms3000/block_rules.h"
+
 namespace gcx::fms3000 {
 
 namespace {
@@ -22,6 +24,7 @@ RemapTable remapTable() {
   RemapTable t;
   Remap p = row("P", std::nullopt, FlowAction::CallSubprogram);
   p.program = ProgramSource::CodeDigits;
+  p.parameterCode = isCycleCode; // after a cycle code P is a parameter (§6.3)
   t.rows.push_back(p);
   t.rows.push_back(row("M", 99, FlowAction::Return));
   t.rows.push_back(row("M", 98, FlowAction::EndProgram));

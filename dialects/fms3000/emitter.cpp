@@ -22,7 +22,9 @@ private:
 } // namespace
 
 emit::Capabilities emitterCapabilities() {
-  return {};
+  // the cycles G81-G88 and G150-G167 stay one block each; P calls and G25 repeats are
+  // expanded yet
+  return {emit::Construct::CannedCycles};
 }
 
 std::unique_ptr<emit::ProgramEmitter> makeEmitter(std::ostream& out) {

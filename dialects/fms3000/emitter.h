@@ -8,7 +8,7 @@
 
 namespace gcx::fms3000 {
 
-/// The constructs gcx writes in FMS-3000 text: none yet, so every cycle and call is expanded.
+/// The constructs gcx writes in FMS-3000 text: the cycles; calls and repeats are expanded.
 emit::Capabilities emitterCapabilities();
 std::unique_ptr<emit::ProgramEmitter> makeEmitter(std::ostream& out);
 

@@ -15,6 +15,11 @@ std::vector<SettingSpec> settings() {
       {S::ArcCentreAbsolute, "N3021", nullptr, 0, "N3021"},
       // N3031: what G92's words mean (001:1789-1800); only 0 is executed yet
       {S::SetCoordinatesMode, "N3031", nullptr, 0, "N3031"},
+      // N3023: the cycles that repeat modally until G80 (001:3516-3519); the setup writes the
+      // set as bits, bit 0 = G81 ... bit 7 = G88 (N3023 = 1 is {81})
+      {S::ModalLevelCycles, "N3023", nullptr, 0, "N3023"},
+      // N7006: X in the turning cycles as radius (0) or diameter (1) (001:2758)
+      {S::DiameterX, "N7006", nullptr, 0, "N7006"},
   };
 }
 

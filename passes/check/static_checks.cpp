@@ -118,6 +118,9 @@ void StaticChecker::words(const ir::Block& b) {
                                    formatNumber(w.number)));
         continue;
       }
+      // the words after a cycle code are its parameters, a set of their own: FMS `X30 Y10 G88
+      // U2 Z-10 X0.2 Y-0.1` positions at X30 Y10, then shifts by X0.2 Y-0.1 (fms3000.md §5.1)
+      if (g->action == GAction::LevelDrillCycle) counts.clear();
       if (g->group != 0 && g->group < static_cast<int>(groupSeen.size()) &&
           !profile_.lastOfModalGroupWins) {
         if (groupSeen[g->group]++)

@@ -37,6 +37,11 @@ Expander::CodeMatch Expander::match(const ir::Word& w, const ir::Block& flat) co
   if (w.kind != ir::ValueKind::Number || !flow_.remaps.mayMatch(w.address)) return m;
   const Remap* row = flow_.remaps.find(w.address, w.number);
   if (!row) return m;
+  if (row->parameterCode)
+    for (const ir::Word& x : flat.words) {
+      if (&x == &w) break;
+      if (x.is('G') && row->parameterCode(x.number)) return m;
+    }
   const ir::Word* program = wordOf(flat, row->programWord);
   if (program) // a row for this program only (a system cycle) comes first
     if (const Remap* only = flow_.remaps.find(w.address, w.number, program->number)) row = only;

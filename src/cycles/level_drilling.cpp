@@ -28,13 +28,7 @@ public:
     moveTo(kind, to, feed);
   }
   void moveTo(OpKind kind, const Vec3& to, double feed = 0) {
-    if ((to - at_).norm() < 0.0005) return;
-    CycleOp op;
-    op.kind = kind;
-    op.to = to;
-    op.feed = feed;
-    ops_.push_back(op);
-    at_ = to;
+    appendMove(ops_, at_, kind, to, feed);
   }
   void event(OpKind kind, double value = 0) {
     CycleOp op;

@@ -42,6 +42,19 @@ struct CycleOp {
   double override = 100;      // RigidTap
 };
 
+/// Appends a straight move from `at` to `to` unless it is shorter than 0.0005 mm (the FMS-3000
+/// resolution: zero-length moves are not emitted), and moves `at` there.
+inline void appendMove(std::vector<CycleOp>& ops, Vec3& at, OpKind kind, const Vec3& to,
+                       double feed = 0) {
+  if ((to - at).norm() < 0.0005) return;
+  CycleOp op;
+  op.kind = kind;
+  op.to = to;
+  op.feed = feed;
+  ops.push_back(op);
+  at = to;
+}
+
 /// The ops in the text form of the spec's vectors (cycles.md §1.1, §8), joined by " | ": each
 /// position lists the axes that change from the previous one (start first), numbers rounded to
 /// 4 decimals: "G0 X10 Y10 | G0 Z2 | G1 Z-5 F120 | G0 Z2". `axes` names the three slots;

@@ -81,6 +81,9 @@ struct Remap {
   char repeatWord = 0; // the word giving the repeat count (NCT L)
   LocalFrame frame = LocalFrame::Shared;
   bool onlyIfProgramExists = false; // a user program overrides a built-in (FMS G<n>)
+  /// A G code whose later words in the block are its parameters: the row does not apply to them
+  /// (FMS `G150 ... P10`: P is the cycle's cone length, no call). Null: always applies.
+  bool (*parameterCode)(double g) = nullptr;
   bool programWordIsNumber = false; // round and range-check the program word as a call number
   bool fileWord = false; // a `<file>` word may name the program instead (NCT M98 <a.nct>)
   /// A repeat count below 1: an error citing this rule, or (empty) no call at all.

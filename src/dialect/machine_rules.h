@@ -46,6 +46,8 @@ enum class Setting : unsigned char {
   CompInterference,     // 1: a compensated move against its programmed direction is an alarm
   SetCoordinatesMode,   // 0: set-coordinates words are the tool's position in the new system
   CompMergeDistance,    // mm: corner vectors closer than this on both axes are merged
+  ModalLevelCycles,     // bit n: level drilling cycle 81+n repeats after each block with an axis
+                        // word until it is cancelled
 };
 
 /// Where the setup holds a setting in this dialect.

@@ -102,8 +102,11 @@ enum class GAction : unsigned char {
   OneSidedPositioning, // a rapid whose final approach always comes from one side (FMS G60)
   ImplicitPlus,        // the other plane axis moves by +|the programmed one's travel| (FMS G47)
   ImplicitMinus,       // ... by -|travel| (FMS G48); on an arc, a quarter circle of that radius
-  LevelDrillCycle,     // a drilling cycle by U/Z/I levels whose parameters follow its code (FMS
-                       // G81-G88); arg = the cycle number (cycles/level_drilling.h)
+  LevelDrillCycle,     // a cycle whose parameters follow its code (FMS G81-G88 by U/Z/I levels,
+                       // cycles/level_drilling.h; G150-G167, cycles/level_turning.h); arg = the
+                       // cycle number
+  PolePolar,           // polar coordinates about a pole the plane's axis words set: I the radius,
+                       // A the angle from the first plane axis (FMS G36, machine/pole_polar.cpp)
   CornerArc,           // radius compensation: an arc of the tool radius at the next outer corner
   VectorHold,          // radius compensation: the block ends with the vector it starts with
 };

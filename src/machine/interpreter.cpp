@@ -272,6 +272,8 @@ bool Interpreter::executeBlock(const ir::Block& block) {
       if (const GCodeSpec* spec = profile_.gcode(g.number);
           spec && spec->action == GAction::LevelDrillCycle)
         return levelCycleBlock(block, g, *spec);
+  if (const auto repeated = levelCycleRepeat(block)) return *repeated;
+  if (const auto polar = polePolarBlock(block)) return *polar;
   BlockWords w;
   if (const ir::Word* bad = sortWords(block, profile_, w))
     return fail(diag::code::ExpressionNotExpanded, bad->range,

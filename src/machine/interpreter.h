@@ -238,6 +238,17 @@ private:
   bool implicitCoordinate(const BlockWords& w, Vec3 to, const motion::Extra& extraTo);
   /// A block with a level drilling cycle: its words before the code first, then the hole.
   bool levelCycleBlock(const ir::Block& block, const ir::Word& code, const GCodeSpec& spec);
+  /// Under a modal level cycle (Setting::ModalLevelCycles), a block with an axis word runs,
+  /// then the cycle's hole from where it ends; nullopt when the block does not repeat a cycle.
+  std::optional<bool> levelCycleRepeat(const ir::Block& block);
+  /// The hole of the level cycle levelCycle_ with levelWords_, from the current position.
+  bool levelHole(const SourceRange& code);
+  /// The turning cycle levelCycle_ (G150-G167) with levelWords_ (machine/level_turning.cpp).
+  bool levelTurning(const SourceRange& code);
+  /// A block that sets the pole (GAction::PolePolar) or moves by I radius and A angle about it:
+  /// run here, with the polar words turned into plane axis words; nullopt for any other block.
+  std::optional<bool> polePolarBlock(const ir::Block& block);
+  bool runRewritten(const ir::Block& rest); // the polar block as plane axis words
   bool directReferenceReturn(const BlockWords& w, int point);
   bool referenceReturn(const BlockWords& w, int point);
   bool machineMove(const BlockWords& w);
@@ -331,6 +342,10 @@ private:
   const GCodeSpec* pendingTurning_ = nullptr; // a one-shot turning cycle in the current block
   int levelCycle_ = 0;                        // the level drilling cycle whose words are kept
   std::map<char, double> levelWords_;         // its parameters, remembered until G80 or another
+  bool repeatingLevelCycle_ = false;          // inside the block that repeats a modal cycle
+  bool levelRapidFlag_ = false;               // `G0` among a turning cycle's parameters
+  std::optional<std::array<double, 2>> pole_; // the polar pole on the plane's two axes (G36)
+  bool polarRewritten_ = false;               // running a polar block's plane axis words
   std::optional<double> pendingDwell_; // seconds, run after the block's motion (dwellAfterMotion)
   const GCodeSpec* turningMode_ = nullptr; // the modal G77.7-G79.7 while group 1 holds it
   std::optional<Vec3> turningEnd_;         // its last end point: omitted X/Z repeat it (§4.1)

@@ -85,8 +85,8 @@ TEST_F(DialectCli, ExpandTargetsComeFromTheRegistry) {
   write("O0001.nct", "G81 X1 Y1 Z-1 R1 F100\nG80\nM30\n");
   Result r = gcx("expand O0001.nct --to canonical --keep cycles");
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_EQ(r.err, "gcx: error: --keep cycles needs a target with canned cycles (--to nct); "
-                   "canonical motion has none\n");
+  EXPECT_EQ(r.err, "gcx: error: --keep cycles needs a target with canned cycles (--to nct, --to "
+                   "fms3000); canonical motion has none\n");
   r = gcx("expand O0001.nct --to nct --keep cycles");
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(r.out, "G81 X1 Y1 Z-1 R1 F100\nG80\nM30\n");

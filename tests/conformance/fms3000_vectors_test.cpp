@@ -131,6 +131,39 @@ TEST(Fms3000Vectors_8, T12_FourHolesWithRememberedParameters) {
                "L 65,0,-10 F100", "R 65,0,0.5", "R 65,0,10"}));
 }
 
+// E38 under N3023 = {81} (bit 0), from Z20: each later block with an axis word runs, then the
+// hole with the remembered parameters; G80 ends the repetition, not N3023
+TEST(Fms3000Vectors_8, T13_ModalCycleUnderN3023) {
+  machine::Setup s = withParameter("N3023", 1);
+  s.initialPosition = {0, 0, 20};
+  EXPECT_EQ(
+      run("G90X100G81U5Z-10I10F50 · X150 · X200 · G80 · X250G81U5Z-10F50 · X300 · X350 · "
+          "X400 · G80 · M30",
+          s),
+      (V{"R 100,0,20",      "R 100,0,5",       "L 100,0,-10 F50", "R 100,0,5",       "R 100,0,10",
+         "R 150,0,10",      "R 150,0,5",       "L 150,0,-10 F50", "R 150,0,5",       "R 150,0,10",
+         "R 200,0,10",      "R 200,0,5",       "L 200,0,-10 F50", "R 200,0,5",       "R 200,0,10",
+         "R 250,0,10",      "R 250,0,5",       "L 250,0,-10 F50", "R 250,0,5",       "R 300,0,5",
+         "L 300,0,-10 F50", "R 300,0,5",       "R 350,0,5",       "L 350,0,-10 F50", "R 350,0,5",
+         "R 400,0,5",       "L 400,0,-10 F50", "R 400,0,5"}));
+}
+
+TEST(Fms3000Cycles_5_1, N3023NamesTheCyclesThatRepeat) {
+  machine::Setup s = s0();
+  s.initialPosition = {0, 0, 10};
+  const std::string program = "G81 U2 Z-5 F100 · X20 · M30";
+  const V once{"R 0,0,2", "L 0,0,-5 F100", "R 0,0,2", "R 20,0,2"};
+  EXPECT_EQ(run(program, s), once); // N3023 empty: one-shot
+  s.parameters["N3023"] = 2;        // bit 1: G82 only
+  EXPECT_EQ(run(program, s), once);
+  s.parameters["N3023"] = 1 + 4; // G81 and G83
+  EXPECT_EQ(run(program, s),
+            (V{"R 0,0,2", "L 0,0,-5 F100", "R 0,0,2", "R 20,0,2", "L 20,0,-5 F100", "R 20,0,2"}));
+  // a block without an axis word does not drill (§5.1, the open question of §10)
+  EXPECT_EQ(run("G81 U2 Z-5 F100 · F50 · G80 X20 · M30", s),
+            (V{"R 0,0,2", "L 0,0,-5 F100", "R 0,0,2", "R 20,0,2"}));
+}
+
 TEST(Fms3000Vectors_8, T14_DeepDrillingAndTapping) {
   EXPECT_EQ(
       run("G0Z10 · M3S500 · G83U2Z-10V4W1F100 · G80 · G84U5Z-20F300E5 · G80 · M30"),
@@ -227,6 +260,37 @@ TEST(Fms3000Vectors_8, T21_ScaleFactorsPerAxisAboutTheWorkOrigin) {
             (V{"L 20,10,0 F100", "L 10,5,0 F100"}));
 }
 
+TEST(Fms3000Vectors_8, T22_PolarCoordinatesAboutAPole) {
+  EXPECT_EQ(run("G36X10Y10 · G1I20A30F100 · I20A90 · G3I20A180R20 · G35 · M30"),
+            (V{"L 27.3205,20,0 F100", "L 10,30,0 F100", "CCW -10,10,0 C10,10 r20 θ90"}));
+}
+
+TEST(Fms3000Polar_3_11, TheRadiusOrTheAngleAloneKeepsTheOther) {
+  // G91 has no effect on polar words or the pole; A alone keeps the distance, I alone the angle
+  EXPECT_EQ(run("G91 · G36X0Y0 · G1I10A0F100 · A90 · I5 · G35 · X1 · M30"),
+            (V{"L 10,0,0 F100", "L 0,10,0 F100", "L 0,5,0 F100", "L 1,5,0 F100"}));
+}
+
+TEST(Fms3000Polar_3_11, ThePlaneNamesThePoleAndTheAngleStartsOnItsFirstAxis) {
+  // G18: the plane is Z-X, A is measured from Z
+  EXPECT_EQ(run("G18 · G36Z0X0 · G1I10A90F100 · I10A0 · G35 · M30"),
+            (V{"L 10,0,0 F100", "L 0,0,10 F100"}));
+}
+
+TEST(Fms3000Polar_3_11, G37EndsPolarCoordinatesLikeG35) {
+  EXPECT_EQ(run("G36X0Y0 · G1I10A90F100 · G37X0Y0A0 · X5 · M30"),
+            (V{"L 0,10,0 F100", "L 5,10,0 F100"}));
+}
+
+TEST(Fms3000Polar_3_11, BrokenPolarRulesAreLocatedErrors) {
+  EXPECT_EQ(errorsOf("G36X10"), V{"main.fms:1:1 FMSX04"});       // no pole on Y
+  EXPECT_EQ(errorsOf("G36X10Y10Z5"), V{"main.fms:1:10 FMSX04"}); // pole not in the plane
+  EXPECT_EQ(errorsOf("G36X0Y0 · G1I20A30Z5F100"), V{"main.fms:2:9 FMSX04"}); // planar only
+  EXPECT_EQ(errorsOf("G36X0Y0 · G1X5F100"), V{"main.fms:2:3 FMSX04"});    // X Y are not polar words
+  EXPECT_EQ(errorsOf("G36X0Y0 · G1I-5A0F100"), V{"main.fms:2:3 FMSX04"}); // a negative radius
+  EXPECT_EQ(errorsOf("G36X0Y0 · G18"), V{"main.fms:2:1 FMSX04"});         // plane change (001:3859)
+}
+
 TEST(Fms3000Vectors_8, T23_RepeatedFragmentThenACall) {
   // L counts the runs of the fragment (§10 Q2); the G25 block itself runs once
   const MacroRun r = runFms({{"main.fms", "G91G25L3\r\nG1X10F100\r\nM25\r\nG90X0P19\r\nM30\r\n"},
@@ -255,6 +319,66 @@ TEST(Fms3000Vectors_8, T24_P19AndP019AreDifferentPrograms) {
                             s0());
   ASSERT_EQ(r.errors, V{}) << r.rendered;
   EXPECT_EQ(r.motion(), (V{"L 1,0,0 F100", "L 1,1,0 F100", "END"}));
+}
+
+// The lathe vectors run under G18 with X along slot 0; the motion is in machine coordinates,
+// so a diameter-programmed X (N7006 = 1) shows as its radius: X94 is 47.
+machine::Setup diameterX() {
+  return withParameter("N7006", 1);
+}
+
+TEST(Fms3000Vectors_8, T26_ChamfersByG166) {
+  EXPECT_EQ(run("G18 G0 X120 Z0 · N1G0Z-170 · N2G1X100F1.2 · N3G166Z-70R-3 · N4G166X50R5 · "
+                "N5G166Z0R-2 · M30",
+                diameterX()),
+            (V{"R 60,0,0", "R 60,0,-170", "L 50,0,-170 F1.2", "L 50,0,-73 F1.2", "L 47,0,-70 F1.2",
+               "L 30,0,-70 F1.2", "L 25,0,-65 F1.2", "L 25,0,-2 F1.2", "L 23,0,0 F1.2"}));
+}
+
+TEST(Fms3000Vectors_8, T27_FilletsByG167) {
+  EXPECT_EQ(run("G18 G0 X120 Z0 · N1G0Z-170 · N2G1X100F1.2 · N3G167Z-70R-4 · N4G167X50R7 · "
+                "N5G167Z0R-5 · M30",
+                diameterX()),
+            (V{"R 60,0,0", "R 60,0,-170", "L 50,0,-170 F1.2", "L 50,0,-74 F1.2",
+               "CW 46,0,-70 C-74,46 r4 θ90", "L 32,0,-70 F1.2", "CCW 25,0,-63 C-63,32 r7 θ90",
+               "L 25,0,-5 F1.2", "CW 20,0,0 C-5,20 r5 θ90"}));
+}
+
+TEST(Fms3000Vectors_8, T30_SinglePassTurningWithACone) {
+  EXPECT_EQ(run("G18G90G0X30Z2 · G150X20Z-30P10Q25F100 · M30"),
+            (V{"R 30,0,2", "L 20,0,2 F100", "L 20,0,-20 F100", "L 25,0,-30 F100", "L 30,0,-30 F100",
+               "R 30,0,2"}));
+}
+
+TEST(Fms3000Vectors_8, T31_DeepDrillingAlongZThenTheFinalX) {
+  EXPECT_EQ(run("G18G90G0X0Z5 · G154U1Z-20V8W1F50X10 · M30"),
+            (V{"R 0,0,5", "R 0,0,1", "L 0,0,-7 F50", "R 0,0,1", "R 0,0,-6", "L 0,0,-15 F50",
+               "R 0,0,1", "R 0,0,-14", "L 0,0,-20 F50", "R 0,0,1", "R 10,0,1"}));
+}
+
+TEST(Fms3000Turning_5_3, G150WithoutAConeAndWithTheRapidFlag) {
+  // G0 after the cycle code makes segment 1 a rapid and leaves the modal G1 alone
+  EXPECT_EQ(run("G18G90G1X30Z2F100 · G150X20Z-30G0 · X31 · M30"),
+            (V{"L 30,0,2 F100", "R 20,0,2", "L 20,0,-30 F100", "L 30,0,-30 F100", "R 30,0,2",
+               "L 31,0,2 F100"}));
+  // under G91 the positions are distances from the start point
+  EXPECT_EQ(run("G18G90G0X30Z2 · G91G150X-10Z-32F100 · M30"),
+            (V{"R 30,0,2", "L 20,0,2 F100", "L 20,0,-30 F100", "L 30,0,-30 F100", "R 30,0,2"}));
+}
+
+TEST(Fms3000Turning_5_3, G160IsTheChipBreakingSequenceAlongZ) {
+  EXPECT_EQ(run("G18G90G0X0Z5 · G160U1Z-20V8W1F50 · M30"),
+            (V{"R 0,0,5", "R 0,0,1", "L 0,0,-7 F50", "R 0,0,-6", "L 0,0,-15 F50", "R 0,0,-14",
+               "L 0,0,-20 F50", "R 0,0,1"}));
+}
+
+TEST(Fms3000Turning_5_3, BadTurningCycleWordsAreLocatedErrors) {
+  EXPECT_EQ(errorsOf("G18 G0 X10 Z0 · G166Z-2R-3"), V{"main.fms:2:1 FMSX02"});  // travel < R
+  EXPECT_EQ(errorsOf("G17 G0 X10 Z0 · G167Z-20R-3"), V{"main.fms:2:1 FMSX02"}); // not in G18
+  EXPECT_EQ(errorsOf("G18 · G150X20Z-30P10F100"), V{"main.fms:2:1 FMSX02"});    // P without Q
+  EXPECT_EQ(errorsOf("G18 · G150X20F100"), V{"main.fms:2:1 FMSX02"});           // no Z
+  EXPECT_EQ(errorsOf("G18 · G154U1Z-20V8F50"), V{"main.fms:2:1 FMSX02"});       // no W
+  EXPECT_EQ(errorsOf("G18 · G150X20Z-30R1F100"), V{"main.fms:2:1 FMSX02"}); // R is no word of G150
 }
 
 // The negative vectors: each raises a located error (X1E3 a warning).

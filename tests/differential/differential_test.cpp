@@ -7,8 +7,8 @@
 
 #include <sstream>
 
-#include "cli/setup_dialects.h"
 #include "differential/oracle_run.h"
+#include "differential/twin_driver.h"
 #include "emit/canonical.h"
 #include "machine/setup.h"
 #include "oracle/canon.h"
@@ -32,14 +32,7 @@ std::vector<std::string> names() {
 }
 
 machine::Setup setupOf(const std::string& name) {
-  const fs::path file = programs() / (name + ".setup.json");
-  if (!fs::exists(file)) return {};
-  SourceManager sm;
-  diag::Engine diags;
-  auto s = machine::parseSetup(readFile(file), sm.addBuffer(file.string(), readFile(file)), diags,
-                               cli::setupDialects("nct"));
-  EXPECT_TRUE(s.has_value()) << file;
-  return s.value_or(machine::Setup{});
+  return setupFileOrDefault(programs() / (name + ".setup.json"), "nct");
 }
 
 struct Ours {

@@ -3,11 +3,7 @@
 //  * the contract: rs274 on gcx's canonical output reproduces gcx's path (1e-4 mm).
 #include <gtest/gtest.h>
 
-#include <sstream>
-
-#include "emit/canonical.h"
-#include "oracle/canon.h"
-#include "oracle/compare.h"
+#include "differential/twin_driver.h"
 #include "oracle/rs274.h"
 #include "support/wl4_support.h"
 
@@ -25,44 +21,20 @@ std::vector<std::string> names() {
   return out;
 }
 
-std::vector<motion::Event> rs274(const std::string& text, std::string& failure) {
-  const oracle::Rs274Result r = oracle::Rs274(oracle::Rs274Options{}).run(text);
-  if (!r.ok()) {
-    failure = r.summary();
-    return {};
-  }
-  oracle::CanonOptions opt;
-  opt.programText = text;
-  return oracle::parseCanon(r.canonLines, opt);
-}
-
 class Wl4Differential : public testing::TestWithParam<std::string> {};
 
 TEST_P(Wl4Differential, TheHandWrittenTwinMovesTheSameOnRs274) {
   if (!oracle::rs274Available()) GTEST_SKIP() << "rs274 (linuxcnc-uspace) is not installed";
   MacroRun ours = runWl4(readFile(folder() / (GetParam() + ".wl4")));
   ASSERT_TRUE(ours.errors.empty()) << ours.rendered;
-  std::string failure;
-  const auto twin = rs274(readFile(folder() / (GetParam() + ".ngc")), failure);
-  ASSERT_TRUE(failure.empty()) << failure;
-  const oracle::CompareResult c = oracle::compareEvents(ours.events, twin);
-  EXPECT_TRUE(c.equivalent) << c.report;
+  expectTwinMovesTheSame(ours.events, readFile(folder() / (GetParam() + ".ngc")));
 }
 
 TEST_P(Wl4Differential, Rs274ReproducesTheCanonicalOutput) {
   if (!oracle::rs274Available()) GTEST_SKIP() << "rs274 (linuxcnc-uspace) is not installed";
   MacroRun ours = runWl4(readFile(folder() / (GetParam() + ".wl4")));
   ASSERT_TRUE(ours.errors.empty()) << ours.rendered;
-  std::ostringstream text;
-  emit::CanonicalEmitter canonical(text);
-  for (const motion::Event& e : ours.events)
-    canonical.event(e);
-  canonical.finish();
-  std::string failure;
-  const auto theirs = rs274(text.str(), failure);
-  ASSERT_TRUE(failure.empty()) << failure << "\n" << text.str();
-  const oracle::CompareResult c = oracle::compareEvents(ours.events, theirs);
-  EXPECT_TRUE(c.equivalent) << c.report << "\n--- canonical:\n" << text.str();
+  expectRs274ReproducesTheCanonicalOutput(ours.events);
 }
 
 TEST_P(Wl4Differential, PrintedBackAsWl4ItMovesTheSame) {
@@ -80,10 +52,7 @@ TEST_P(Wl4Differential, PrintedBackAsWl4ItMovesTheSame) {
 
 INSTANTIATE_TEST_SUITE_P(Wl4, Wl4Differential, testing::ValuesIn(names()),
                          [](const testing::TestParamInfo<std::string>& p) {
-                           std::string n = "p" + p.param;
-                           for (char& c : n)
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           return n;
+                           return twinTestName(p.param);
                          });
 
 } // namespace

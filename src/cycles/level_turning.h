@@ -1,0 +1,31 @@
+// The FMS-3000 turning cycles whose parameters follow the code (fms3000.md §5.3, cycles.md
+// appendix A.5), on the lathe axes X (slot 0, as radius) and Z (slot 2): G150 single-pass
+// longitudinal turning, G154/G160 drilling along Z (the G83/G86 sequences of the level drilling
+// cycles, then the final X), G166 chamfer and G167 fillet. A pure function of its inputs: the
+// ops from the cycle's start point (И.Т.), in program coordinates.
+#pragma once
+#include <map>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "cycles/ops.h"
+
+namespace gcx::cycles {
+
+struct LevelTurnRequest {
+  int cycle = 150;
+  Vec3 position = Vec3::Zero(); // the start point И.Т.
+  bool incremental = false;     // G91: positions are signed distances from И.Т.
+  /// The cycle's parameters, remembered ones included; X-type values already as radius.
+  std::map<char, double> words;
+  bool rapidFlag = false;           // `G0` among the parameters: the first segment is a rapid
+  bool modalRapid = false;          // G166/G167: the straight part under G0 (else G1)
+  double feed = 0;                  // F when not among the words
+  double dwellSecondsPerUnit = 0.1; // E
+};
+
+/// The ops, or the message of a missing, extra or bad parameter. Zero-length moves are left out.
+std::variant<std::vector<CycleOp>, std::string> expandLevelTurning(const LevelTurnRequest& req);
+
+} // namespace gcx::cycles

@@ -1,0 +1,45 @@
+// The interpreter's side of the FMS-3000 turning cycles whose parameters follow the code
+// (fms3000.md §5.3): the parameters' X-type values from diameter to radius (Setting::DiameterX),
+// the modal G0/G1 of the chamfer's straight part, and the ops from cycles/level_turning.h.
+#include <fmt/format.h>
+
+#include <limits>
+
+#include "cycles/level_turning.h"
+#include "diag/codes.h"
+#include "machine/interpreter.h"
+#include "motion/geometry.h"
+
+namespace gcx::machine {
+
+bool Interpreter::levelTurning(const SourceRange& code) {
+  if (levelCycle_ == 167 && state_.plane != motion::Plane::ZX)
+    return fail(diag::code::FmsCycleParameters, code,
+                "G167 turns its fillet in the lathe plane: G18 first (fms3000.md §5.3.2)");
+  cycles::LevelTurnRequest req;
+  req.cycle = levelCycle_;
+  req.position = program_;
+  req.incremental = state_.incremental;
+  req.words = levelWords_;
+  // X-type parameters follow the diameter setting; R of G166/G167 is always a radius
+  if (state_.diameterAxes & 1u)
+    for (char c : {'X', 'Q'})
+      if (auto it = req.words.find(c); it != req.words.end() && (c == 'X' || levelCycle_ == 150))
+        it->second /= 2;
+  req.rapidFlag = levelRapidFlag_;
+  req.modalRapid = state_.motion == GAction::Rapid;
+  req.feed = state_.feed;
+  req.dwellSecondsPerUnit = profile_.machine.dwell.secondsPerUnit;
+  if (auto f = levelWords_.find('F'); f != levelWords_.end()) state_.feed = f->second;
+  const auto ops = cycles::expandLevelTurning(req);
+  if (const std::string* why = std::get_if<std::string>(&ops))
+    return fail(diag::code::FmsCycleParameters, code, *why);
+  from_.chain.push_back({code.begin, fmt::format("G{}", levelCycle_)});
+  const bool ok = runCycleOps(std::get<std::vector<cycles::CycleOp>>(ops),
+                              std::numeric_limits<std::size_t>::max(), BlockWords{},
+                              motion::axesOf(state_.plane).normal);
+  from_.chain.pop_back();
+  return ok && !stopped_;
+}
+
+} // namespace gcx::machine
