@@ -1,6 +1,7 @@
 #include "dialects/wl4/control_flow.h"
 
 #include "dialects/wl4/system_programs.h"
+#include "dialects/wl4/system_variables.h"
 
 namespace gcx::wl4 {
 
@@ -29,6 +30,20 @@ RemapTable remaps() {
     cycle.modalCode10 = g * 10;
     cycle.spec = "wl4.md §5.1";
     t.rows.push_back(cycle);
+  }
+  // G31, G70-G75, G77, G78: the block's axis words are the target of system program %1, which
+  // does all the moving, dispatched on #108 (§5.1, §5.3)
+  for (int g : {31, 70, 71, 72, 73, 74, 75, 77, 78}) {
+    Remap open;
+    open.address = "G";
+    open.code = g;
+    open.action = FlowAction::CallOpenCycle;
+    open.program = ProgramSource::Fixed;
+    open.fixedProgram = "1";
+    open.frame = LocalFrame::Copy;
+    open.cycleWords = "IP"; // G31: lead increment and phase (#136, #140)
+    open.spec = "wl4.md §5.1";
+    t.rows.push_back(open);
   }
   Remap cancel;
   cancel.address = "G";
@@ -62,7 +77,11 @@ const ControlFlow& controlFlow() {
       return std::vector<std::string>{unit + ext};
     };
     f.programLabel = [](const std::string& unit) { return "%" + unit; };
-    f.systemProgram = &systemProgram; // %81-%89 (§5.2)
+    f.systemProgram = &systemProgram; // %1, %81-%89 (§5.2, §5.4)
+    f.systemVariables = [](machine::Interpreter& m, diag::Engine& d) {
+      return std::unique_ptr<macro::SystemVariableStore>(std::make_unique<SystemVariables>(m, d));
+    };
+    f.maxCallDepth = 5; // the main program and 5 levels; cycles and %1 count (§6.7)
     return f;
   }();
   return flow;

@@ -188,6 +188,8 @@ bool Expander::ncFlat(Frame& f, const ir::Block& b, ir::Block& flat) {
     }
   }
   if (primary.row && isModal(primary.row->action)) return modalBlock(f, b, flat, primary);
+  if (primary.row && primary.row->action == FlowAction::CallOpenCycle)
+    return openCycleCall(f, b, flat, primary);
   // a modal call made by every block: the block's words are the arguments (§5.6 E2)
   if (const ModalCall* m = visibleModalCall(); m && m->everyBlock && !flat.words.empty())
     return everyBlockCall(f, b, flat, *m);

@@ -89,14 +89,16 @@ inline constexpr const char* PathOutsideFolders = "GCX046";    // M98 <../x>, an
 inline constexpr const char* FeedPerRevolutionAtS0 = "GCX047"; // G95 move, spindle speed 0
 inline constexpr const char* ParameterMissing = "NCTX11";
 // --- WL4 (wl4.md)
-inline constexpr const char* Wl4Syntax = "GCX060";         // a WL4 block that does not parse
-inline constexpr const char* Wl4CallWord = "GCX061";       // L not nn or nnpp, or pp = 00
-inline constexpr const char* Wl4DuplicateLabel = "GCX062"; // a label twice in one program
-inline constexpr const char* Wl4ProgramName = "GCX063";    // a %name longer than 80
+inline constexpr const char* Wl4Syntax = "GCX060";           // a WL4 block that does not parse
+inline constexpr const char* Wl4CallWord = "GCX061";         // L not nn or nnpp, or pp = 00
+inline constexpr const char* Wl4DuplicateLabel = "GCX062";   // a label twice in one program
+inline constexpr const char* Wl4ProgramName = "GCX063";      // a %name longer than 80
 inline constexpr const char* Wl4FanucComment = "GCXW20";     // `(` where a word would start
 inline constexpr const char* Wl4WholeMillimetres = "GCXW21"; // X1030 is 1030 mm
 inline constexpr const char* Wl4FanucReturnLevel = "GCXW22"; // G98/G99
 inline constexpr const char* Wl4FanucCall = "GCXW23";        // M98 is no call
+inline constexpr const char* ErrorStop = "GCX064";      // a block that jumps to itself: %1's stops
+inline constexpr const char* SystemReadOnly = "GCX065"; // WL4 #100 and up are read-only
 
 // --- gcx: setup file (--setup FILE, src/machine/setup)
 inline constexpr const char* SetupNotJson = "GCX020";

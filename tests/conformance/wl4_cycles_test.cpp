@@ -102,7 +102,7 @@ TEST(Wl4Cycles_5_2, EveryShippedProgramReadsCleanlyAsTheUnitItIsCalled) {
     EXPECT_EQ(parsed.blocks.front().programName, p.unit);
     units.push_back(p.unit);
   }
-  EXPECT_EQ(units, (V{"81", "82", "83", "84", "85", "86", "87", "88", "89"}));
+  EXPECT_EQ(units, (V{"1", "81", "82", "83", "84", "85", "86", "87", "88", "89"}));
 }
 
 } // namespace
