@@ -2,6 +2,7 @@
 
 #include "dialects/wl4/system_programs.h"
 #include "dialects/wl4/system_variables.h"
+#include "ir/block.h"
 
 namespace gcx::wl4 {
 
@@ -56,6 +57,16 @@ RemapTable remaps() {
   return t;
 }
 
+// G4 X (a dwell), G36 (home), G51 X-1 (mirror), G92 (set coordinates): axis words that are no
+// move, so no canned cycle runs after the block (§5.1)
+bool axisWordsNoMove(const ir::Block& flat) {
+  for (const ir::Word& w : flat.words)
+    if (w.is('G') && w.isLiteral() &&
+        (w.number == 4 || w.number == 36 || w.number == 51 || w.number == 92))
+      return true;
+  return false;
+}
+
 } // namespace
 
 bool isLabel(std::string_view sequenceText) {
@@ -81,6 +92,7 @@ const ControlFlow& controlFlow() {
     f.systemVariables = [](machine::Interpreter& m, diag::Engine& d) {
       return std::unique_ptr<macro::SystemVariableStore>(std::make_unique<SystemVariables>(m, d));
     };
+    f.axisWordsNoMove = &axisWordsNoMove;
     f.maxCallDepth = 5; // the main program and 5 levels; cycles and %1 count (§6.7)
     return f;
   }();

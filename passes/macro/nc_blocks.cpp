@@ -237,7 +237,9 @@ bool Expander::execute(Frame& f, const ir::Block& b, const ir::Block& flat) {
     }
   }
   // a modal call after each motion block: the most recent visible one (§5.5 D2, D3)
-  if (const ModalCall* m = visibleModalCall(); m && !m->everyBlock && movesAxes(flat)) {
+  if (const ModalCall* m = visibleModalCall();
+      m && !m->everyBlock && movesAxes(flat) &&
+      !(flow_.axisWordsNoMove && flow_.axisWordsNoMove(flat))) {
     const std::size_t index = static_cast<std::size_t>(m - modalCalls_.data());
     return pushFrame(f, m->program, m->frame, m->args, m->times, m->what, b.range, index);
   }

@@ -200,6 +200,9 @@ struct ControlFlow {
   LocalFrame callFrame = LocalFrame::Shared;
   /// `#n=e` may stand inside an expression and assigns there (WL4, wl4.md §6.4).
   bool assignsInExpressions = false;
+  /// A block whose axis words are no move (WL4 `G4 X2`, `G92 X0`): no modal call after it;
+  /// null: every block with an axis word moves.
+  std::function<bool(const ir::Block& flat)> axisWordsNoMove;
   /// Calls may nest this deep (WL4: 5, wl4.md §6.7); 0: as deep as the run's --max-depth.
   int maxCallDepth = 0;
   /// Whether a block number is a label a Jump statement may reach (WL4: written with a leading
