@@ -34,6 +34,9 @@ MachineRules machineRules() {
   r.arcL = ArcLMeaning::None;            // L is a call, never an arc word
   r.workOffsetEndsSetCoordinates = true; // G92 is cancelled by G53-G59 (§3.11)
   r.workOffsetNames = {"G54", "G55", "G56", "G57", "G58", "G59"};
+  // B is a rotary axis, or with the setup's b_chamfer = 1 the automatic chamfer's leg (§3.16)
+  r.contour.chamferAxis = 'B';
+  r.contour.chamferAxisKey = "b_chamfer";
   return r;
 }
 
