@@ -1,7 +1,9 @@
 // The syntax of one WL4 line (wl4.md §1, §6.8): the normative grammar of the dialect. The front
-// end (dialects/wl4/block_parser.cpp) is a recursive-descent parser written from these rules;
-// the block reader has already cut the line, located the `$` comment and read sign aliases as
-// '-'. Blanks may stand between tokens (§1.3) but not inside a number or a keyword.
+// end parses it twice over: dialects/wl4/block_parser.cpp is a recursive-descent parser written
+// from these rules (the fast path), dialects/wl4/tree_builder.cpp builds the same IR from this
+// grammar's tree. The block reader has already cut the line before the `$` comment and read sign
+// aliases as '-'. Blanks may stand between tokens (§1.3) but not inside a number or a keyword, nor
+// between N, L, '#' or IF<p> and their digits (the tree builder checks that adjacency).
 grammar WL4;
 
 // ---------------------------------------------------------------- lines
@@ -13,7 +15,7 @@ line
     ;
 
 // the name: letters, digits and '_', at most 80 characters (blanks are the reader's to refuse)
-programStart : PERCENT (ADDRESS | N | L | DIGITS | UNDERSCORE | keyword)+ ;
+programStart : PERCENT (ADDRESS | N | L | WORD | DIGITS | UNDERSCORE | keyword)+ ;
 programEnd   : PERCENT ;
 
 blockNumber : N DIGITS ; // a leading 0 makes it a label: N010 is label 10 (§1.8)
@@ -26,7 +28,8 @@ item
     | ADDRESS value                 // a word (§1.5)
     ;
 
-message : DOT ~EOF* ; // `.` where a word would start: text to the end of the line (§1.6)
+// `.` where a word would start: text to the end of the line (§1.6), even `.5 MM STOCK`
+message : (DOT | FRACTION) ~EOF* ;
 
 // value = [sign] (number | varref ["=" factor] | "(" expr ")")
 value
@@ -45,7 +48,8 @@ primary
     : number
     | variable (ASSIGN factor)?       // #n=factor assigns and yields the value (§6.4)
     | LPAREN expr RPAREN
-    | ATAN LPAREN expr RPAREN SLASH LPAREN expr RPAREN
+    | ATAN LPAREN expr RPAREN SLASH LPAREN expr RPAREN // ATAN(a)/(b): the angle of (b, a)
+    | ATAN LPAREN expr RPAREN                          // ATAN(a)/2 divides ATAN(a)
     | FUNCTION LPAREN expr RPAREN
     ;
 
@@ -56,10 +60,11 @@ op2  : PLUS | MINUS | EQ | NE | LE | GE | LT | GT | AND | OR | XOR ;
 sign : PLUS | MINUS ;
 keyword : IF | MOD | AND | OR | XOR | ATAN | FUNCTION ;
 
-number : DIGITS (DOT DIGITS?)? | DOT DIGITS ; // no point: whole millimetres, X1030 = 1030 mm
+number : DIGITS | DECIMAL | FRACTION ; // no point: whole millimetres, X1030 = 1030 mm
 
 // ---------------------------------------------------------------- tokens
-// A run of two or more letters is a keyword; one letter is an address (§6.8).
+// A run of two or more letters is a keyword (or, not being one, an unknown word: WORD); one letter
+// is an address (§6.8).
 
 IF       : 'IF' ;
 MOD      : 'MOD' ;
@@ -72,7 +77,10 @@ FUNCTION : 'ABS' | 'COS' | 'ACOS' | 'SIN' | 'ASIN' | 'TAN' | 'EXP' | 'FIX' | 'FU
 N        : 'N' ;
 L        : 'L' ;
 ADDRESS  : [A-KM-Z] ; // every letter but L and N, which are calls and block numbers
+WORD     : [A-Z] [A-Z]+ ;
 DIGITS   : [0-9]+ ;
+DECIMAL  : [0-9]+ '.' [0-9]* ;
+FRACTION : '.' [0-9]+ ;
 PERCENT  : '%' ;
 UNDERSCORE : '_' ;
 HASH     : '#' ;
@@ -92,3 +100,4 @@ PLUS     : '+' ;
 MINUS    : '-' ;
 DOT      : '.' ;
 BLANK    : ' ' -> skip ;
+OTHER    : . ; // any other character: the parser refuses it where it stands, located

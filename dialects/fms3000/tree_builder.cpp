@@ -7,6 +7,7 @@
 #include "FMS3000Parser.h"
 #include "antlr4-runtime.h"
 #include "diag/codes.h"
+#include "front/antlr_block_parser.h"
 
 namespace gcx::fms3000 {
 
@@ -14,32 +15,6 @@ using P = fmsgen::FMS3000Parser;
 using antlr4::Token;
 
 namespace {
-
-struct FirstError {
-  bool set = false;
-  bool lexer = false;
-  std::size_t pos = 0;
-  Token* token = nullptr;
-};
-
-class Collector : public antlr4::BaseErrorListener {
-public:
-  FirstError* err = nullptr;
-  antlr4::Lexer* lexer = nullptr;
-
-  void syntaxError(antlr4::Recognizer*, Token* offending, std::size_t, std::size_t,
-                   const std::string&, std::exception_ptr) override {
-    if (err->set) return;
-    err->set = true;
-    if (offending) {
-      err->token = offending;
-      err->pos = offending->getStartIndex();
-    } else {
-      err->lexer = true;
-      err->pos = lexer->tokenStartCharIndex;
-    }
-  }
-};
 
 double numberOf(const std::string& digits) {
   std::string t = digits.front() == '.' ? "0" + digits : digits; // from_chars wants a digit
@@ -54,23 +29,7 @@ bool isAddressToken(std::size_t type) {
 
 } // namespace
 
-struct GrammarParser::Impl {
-  antlr4::ANTLRInputStream input;
-  fmsgen::FMS3000Lexer lexer{&input};
-  antlr4::CommonTokenStream tokens{&lexer};
-  P parser{&tokens};
-  FirstError first;
-  Collector collector;
-
-  Impl() {
-    lexer.removeErrorListeners();
-    parser.removeErrorListeners();
-    collector.err = &first;
-    collector.lexer = &lexer;
-    lexer.addErrorListener(&collector);
-    parser.addErrorListener(&collector);
-  }
-
+struct GrammarParser::Impl : front::AntlrBlockParser<fmsgen::FMS3000Lexer, P> {
   void report(const front::RawBlock& raw, diag::Engine& diags);
 };
 
@@ -83,9 +42,7 @@ void GrammarParser::Impl::report(const front::RawBlock& raw, diag::Engine& diags
                 fmt::format("unexpected character '{}'", raw.text.substr(first.pos, 1)));
     return;
   }
-  std::vector<Token*> toks;
-  for (Token* t : tokens.getTokens())
-    if (t->getChannel() == Token::DEFAULT_CHANNEL) toks.push_back(t);
+  const std::vector<Token*> toks = visibleTokens();
   auto at = [&](Token* t) {
     const std::size_t len =
         t->getType() == Token::EOF ? 1 : t->getStopIndex() + 1 - t->getStartIndex();
@@ -138,11 +95,7 @@ void GrammarParser::Impl::report(const front::RawBlock& raw, diag::Engine& diags
 
 bool GrammarParser::parse(const front::RawBlock& raw, ir::Block& out, diag::Engine& diags) {
   Impl& m = *impl_;
-  m.first = FirstError{};
-  m.input.load(raw.lexText);
-  m.lexer.setInputStream(&m.input);
-  m.tokens.setTokenSource(&m.lexer);
-  m.parser.setTokenStream(&m.tokens);
+  m.reset(raw.lexText);
   m.tokens.fill();
   if (m.first.set) {
     m.report(raw, diags);

@@ -7,6 +7,7 @@
 #include "NCTParser.h"
 #include "antlr4-runtime.h"
 #include "diag/codes.h"
+#include "front/antlr_block_parser.h"
 
 namespace gcx::nct {
 
@@ -14,36 +15,6 @@ using P = nctgen::NCTParser;
 using antlr4::Token;
 
 namespace {
-
-struct FirstError {
-  bool set = false;
-  std::size_t pos = 0;
-  std::size_t len = 1;
-  bool lexer = false;
-  Token* token = nullptr;
-};
-
-class Collector : public antlr4::BaseErrorListener {
-public:
-  FirstError* err = nullptr;
-  antlr4::Lexer* lexer = nullptr;
-
-  void syntaxError(antlr4::Recognizer*, Token* offending, std::size_t, std::size_t,
-                   const std::string&, std::exception_ptr) override {
-    if (err->set) return;
-    err->set = true;
-    if (offending) {
-      err->token = offending;
-      err->pos = offending->getStartIndex();
-      err->len = offending->getType() == Token::EOF
-                     ? 1
-                     : offending->getStopIndex() - offending->getStartIndex() + 1;
-    } else {
-      err->lexer = true;
-      err->pos = lexer->tokenStartCharIndex;
-    }
-  }
-};
 
 // Cancels the first (fast, SLL) attempt at the first error; the second attempt runs full LL.
 class Cancel : public antlr4::BaseErrorListener {
@@ -589,28 +560,8 @@ bool checkNestingDepth(const front::RawBlock& raw, const std::vector<Token*>& to
 
 } // namespace
 
-struct GrammarParser::Impl {
-  antlr4::ANTLRInputStream input;
-  nctgen::NCTLexer lexer{&input};
-  antlr4::CommonTokenStream tokens{&lexer};
-  nctgen::NCTParser parser{&tokens};
-  Collector collector;
+struct GrammarParser::Impl : front::AntlrBlockParser<nctgen::NCTLexer, nctgen::NCTParser> {
   Cancel cancel;
-  FirstError first;
-
-  Impl() {
-    lexer.removeErrorListeners();
-    parser.removeErrorListeners();
-    collector.err = &first;
-    collector.lexer = &lexer;
-  }
-
-  void reset(const std::string& text) {
-    input.load(text);
-    lexer.setInputStream(&input);
-    tokens.setTokenSource(&lexer);
-    parser.setTokenStream(&tokens);
-  }
 
   void report(const front::RawBlock& raw, diag::Engine& diags);
 };
@@ -626,9 +577,7 @@ void GrammarParser::Impl::report(const front::RawBlock& raw, diag::Engine& diags
     return;
   }
   // Explain the common mistakes in the manual's terms before falling back to "unexpected".
-  std::vector<Token*> toks;
-  for (Token* t : tokens.getTokens())
-    if (t->getChannel() == Token::DEFAULT_CHANNEL) toks.push_back(t);
+  const std::vector<Token*> toks = visibleTokens();
   auto at = [&](Token* t) {
     return raw.rangeAt(t->getStartIndex(), t->getStopIndex() + 1 - t->getStartIndex());
   };
@@ -704,12 +653,9 @@ void GrammarParser::Impl::report(const front::RawBlock& raw, diag::Engine& diags
 bool GrammarParser::parse(const front::RawBlock& raw, ir::Block& out, diag::Engine& diags) {
   if (!checkBrackets(raw, diags)) return false;
   Impl& m = *impl_;
-  m.first = FirstError{};
   m.reset(raw.lexText);
 
   // 1st attempt: SLL prediction, bail at the first error (the fast, common case).
-  m.lexer.removeErrorListeners();
-  m.lexer.addErrorListener(&m.collector);
   m.parser.removeErrorListeners();
   m.cancel.hit = false;
   m.parser.addErrorListener(&m.cancel);

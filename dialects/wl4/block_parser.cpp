@@ -9,13 +9,11 @@
 #include <string_view>
 
 #include "diag/codes.h"
+#include "dialects/wl4/block_items.h"
 
 namespace gcx::wl4 {
 
 namespace {
-
-constexpr int kMaxDepth = 64;        // nested parentheses and operators (GCX017)
-constexpr std::size_t kMaxName = 80; // program name (wl4.md §1.2)
 
 bool isDigit(char c) {
   return c >= '0' && c <= '9';
@@ -23,19 +21,6 @@ bool isDigit(char c) {
 bool isLetter(char c) {
   return c >= 'A' && c <= 'Z';
 }
-
-struct FuncName {
-  std::string_view name;
-  ir::Func func;
-};
-// wl4.md §6.3: FIX rounds down, FUP up, ROUND to nearest (ties away from zero)
-constexpr FuncName kFunctions[] = {
-    {"ABS", ir::Func::Abs},   {"COS", ir::Func::Cos},     {"ACOS", ir::Func::Acos},
-    {"SIN", ir::Func::Sin},   {"ASIN", ir::Func::Asin},   {"TAN", ir::Func::Tan},
-    {"EXP", ir::Func::Exp},   {"FIX", ir::Func::Floor},   {"FUP", ir::Func::Ceil},
-    {"LN", ir::Func::Ln},     {"ROUND", ir::Func::Round}, {"SQRT", ir::Func::Sqrt},
-    {"ATAN", ir::Func::Atan},
-};
 
 class Parser {
 public:
@@ -68,8 +53,11 @@ private:
       ++e;
     return t_.substr(at, e - at);
   }
-  SourceRange range(std::size_t pos, std::size_t len) const {
-    return raw_.rangeAt(pos, std::max<std::size_t>(len, 1));
+  SourceRange range(std::size_t pos, std::size_t len) const { return rangeOf(raw_, pos, len); }
+  /// The result of a shared item rule (block_items.h), which has reported its own error.
+  bool checked(bool ok) {
+    ok_ = ok_ && ok;
+    return ok;
   }
   bool fail(const char* code, std::size_t pos, std::size_t len, std::string message) {
     if (ok_) diags_.error(code, range(pos, len), std::move(message));
@@ -94,7 +82,6 @@ private:
   bool callWord(std::size_t at);
   bool guard(std::size_t at, std::size_t keywordEnd);
   bool assignment(std::size_t at);
-  void comments();
   std::optional<std::string> digits(std::size_t at);
 
   // ---- values and expressions
@@ -106,8 +93,7 @@ private:
   std::optional<ir::Expr> primary();
   std::optional<ir::Expr> parenthesised(std::size_t at);
   std::optional<ir::Expr> function(std::size_t at, std::string_view name);
-  std::optional<ir::Op> op2();
-  std::optional<ir::Op> op1();
+  std::optional<ir::Op> binaryOp(int level);
   ir::Expr node(ir::ExprKind kind, std::size_t at, std::vector<ir::Expr> args) const {
     ir::Expr e;
     e.kind = kind;
@@ -116,9 +102,9 @@ private:
     return e;
   }
   bool deeper(std::size_t at) {
-    if (++depth_ <= kMaxDepth) return true;
-    fail(diag::code::ExpressionTooDeep, at, 1,
-         fmt::format("expression nested more than {} levels deep", kMaxDepth));
+    if (++depth_ <= kMaxExpressionDepth) return true;
+    if (ok_) reportTooDeep(raw_, at, diags_);
+    ok_ = false;
     return false;
   }
 
@@ -132,9 +118,7 @@ private:
 };
 
 bool Parser::block() {
-  out_ = ir::Block{};
-  out_.range = range(0, raw_.text.size());
-  out_.lastLine = raw_.lastLine();
+  startBlock(raw_, out_);
   if (peek() == '%') return programLine(p_);
   if (peek() == '/') { // block skip: one level, before N (§1.7)
     out_.skipLevel = 1;
@@ -144,9 +128,8 @@ bool Parser::block() {
     return false;
   while (ok_ && peek() != '\0')
     if (!item()) return false;
-  comments();
-  if (out_.words.empty() && out_.stmts.empty() && !out_.sequence && out_.skipLevel == 0)
-    out_.kind = ir::BlockKind::CommentLine;
+  addLineComment(raw_, out_);
+  finishBlock(out_);
   return ok_;
 }
 
@@ -160,14 +143,11 @@ bool Parser::programLine(std::size_t at) {
     return syntax(
         p_, 1,
         fmt::format("{} after the program name: a name is letters, digits and '_'", found()));
-  if (name.size() > kMaxName)
-    return fail(diag::code::Wl4ProgramName, nameAt, name.size(),
-                fmt::format("program name of {} characters: at most {} (wl4.md §1.2)", name.size(),
-                            kMaxName));
+  if (!checked(checkProgramName(raw_, nameAt, name, diags_))) return false;
   out_.kind = name.empty() ? ir::BlockKind::ProgramEnd : ir::BlockKind::ProgramStart;
   out_.programName = std::string(name);
   (void)at;
-  comments();
+  addLineComment(raw_, out_);
   return true;
 }
 
@@ -180,6 +160,10 @@ std::optional<std::string> Parser::digits(std::size_t at) {
     return std::nullopt;
   }
   std::string d(t_.substr(p_, e - p_));
+  if (e < t_.size() && t_[e] == '.') { // N10.5, L07.5, #1.5, IF3.5: a typo, not a message
+    syntax(at, e - at + 1, fmt::format("'{}' takes whole digits, found '{}.'", t_[at], d));
+    return std::nullopt;
+  }
   p_ = e;
   return d;
 }
@@ -188,20 +172,15 @@ std::optional<std::pair<std::string, long long>> Parser::nDigits(std::size_t at)
   ++p_;
   auto d = digits(at);
   if (!d) return std::nullopt;
-  const long long n = d->size() > 9 ? 0 : std::stoll(*d);
-  if (n >= 1 && n <= 65535) return std::pair{*d, n};
-  fail(diag::code::DataOutOfRange, at, p_ - at,
-       fmt::format("N{} is out of range: block numbers and labels are 1-65535 (wl4.md §1.4)", *d));
-  return std::nullopt;
+  const auto n = nValue(raw_, at, p_, *d, diags_);
+  if (!checked(n.has_value())) return std::nullopt;
+  return std::pair{*d, *n};
 }
 
 bool Parser::sequenceNumber(std::size_t at) {
   auto number = nDigits(at);
   if (!number) return false;
-  const auto& [d, n] = *number;
-  out_.sequence = n;
-  out_.sequenceText = d;
-  out_.sequenceRange = range(at, p_ - at);
+  setSequence(raw_, out_, at, p_, number->first, number->second);
   return true;
 }
 
@@ -209,16 +188,8 @@ bool Parser::item() {
   const std::size_t at = p_;
   const char c = t_[p_];
   if (c == '.') { // a message where a word would start, to the end of the line (§1.6)
-    const std::size_t end = t_.size();
-    ir::Comment m;
-    m.kind = ir::CommentKind::Message;
-    m.text = raw_.text.substr(at + 1, end - at - 1);
-    while (!m.text.empty() && m.text.back() == ' ')
-      m.text.pop_back();
-    m.range = range(at, end - at);
-    m.order = static_cast<std::uint32_t>(at);
-    out_.comments.push_back(std::move(m));
-    p_ = end;
+    addMessage(raw_, out_, at, t_.size());
+    p_ = t_.size();
     return true;
   }
   if (c == '#') return assignment(at);
@@ -247,14 +218,7 @@ bool Parser::jumpWord(std::size_t at) {
   // an N that is not first: after the block, continue at label N0.. (§6.6)
   auto number = nDigits(at);
   if (!number) return false;
-  const auto& [d, n] = *number;
-  ir::Stmt s;
-  s.kind = ir::StmtKind::Jump;
-  s.label = d;
-  s.value = ir::Expr::literal(static_cast<double>(n), range(at + 1, d.size()));
-  s.range = range(at, p_ - at);
-  s.order = static_cast<std::uint32_t>(at);
-  out_.stmts.push_back(std::move(s));
+  addJump(raw_, out_, at, p_, number->first, number->second);
   return true;
 }
 
@@ -263,23 +227,7 @@ bool Parser::callWord(std::size_t at) {
   ++p_;
   auto d = digits(at);
   if (!d) return false;
-  if (d->size() != 2 && d->size() != 4)
-    return fail(diag::code::Wl4CallWord, at, p_ - at,
-                fmt::format("L{}: a call is L and 2 digits (program) or 4 digits (program and "
-                            "repeat count), L07 or L0703 (wl4.md §6.7)",
-                            *d));
-  const int times = d->size() == 4 ? std::stoi(d->substr(2)) : 1;
-  if (times == 0)
-    return fail(diag::code::Wl4CallWord, at, p_ - at,
-                fmt::format("L{}: repeat count 00; write L{} to call once", *d, d->substr(0, 2)));
-  ir::Stmt s;
-  s.kind = ir::StmtKind::Call;
-  s.callee = d->substr(0, 2);
-  s.value = ir::Expr::literal(times, range(at, p_ - at));
-  s.range = range(at, p_ - at);
-  s.order = static_cast<std::uint32_t>(at);
-  out_.stmts.push_back(std::move(s));
-  return true;
+  return checked(addCall(raw_, out_, at, p_, *d, diags_));
 }
 
 bool Parser::guard(std::size_t at, std::size_t keywordEnd) {
@@ -289,9 +237,9 @@ bool Parser::guard(std::size_t at, std::size_t keywordEnd) {
   if (p_ < t_.size() && isDigit(t_[p_])) { // IF<p>: compare at p decimals (§6.5)
     auto d = digits(at);
     if (!d) return false;
-    if (d->size() > 1)
-      return syntax(keywordEnd, d->size(), fmt::format("IF{}: the precision is one digit", *d));
-    s.precision = std::stoi(*d);
+    const auto precision = guardPrecision(raw_, keywordEnd, *d, diags_);
+    if (!checked(precision.has_value())) return false;
+    s.precision = *precision;
   }
   if (peek() != '(')
     return syntax(p_, 1, fmt::format("IF needs '(' condition ')', found {}", found()));
@@ -337,9 +285,7 @@ bool Parser::addressWord(char letter, std::size_t at) {
     if (sign) spaces();
     auto n = number();
     if (!n) return false;
-    w.kind = ir::ValueKind::Number;
-    w.number = std::stod(*n) * (sign == '-' ? -1 : 1);
-    w.text = (sign == '-' ? "-" : "") + *n;
+    setLiteral(w, sign, *n);
   } else {
     std::optional<ir::Expr> e;
     const std::size_t valueAt = p_;
@@ -373,19 +319,6 @@ bool Parser::addressWord(char letter, std::size_t at) {
   w.range = range(at, p_ - at);
   out_.words.push_back(std::move(w));
   return true;
-}
-
-void Parser::comments() {
-  if (raw_.lineCommentAt == std::string::npos) return;
-  ir::Comment c;
-  c.kind = ir::CommentKind::ToLineEnd;
-  const std::size_t at = raw_.lineCommentAt;
-  c.text = raw_.text.substr(at + 1);
-  while (!c.text.empty() && (c.text.back() == ' ' || c.text.back() == '\r'))
-    c.text.pop_back();
-  c.range = range(at, raw_.text.size() - at);
-  c.order = static_cast<std::uint32_t>(at);
-  out_.comments.push_back(std::move(c));
 }
 
 // ---------------------------------------------------------------- expressions
@@ -430,36 +363,12 @@ std::optional<ir::Expr> Parser::variable() {
   return v;
 }
 
-std::optional<ir::Op> Parser::op2() {
+std::optional<ir::Op> Parser::binaryOp(int level) {
   spaces();
-  static const std::pair<std::string_view, ir::Op> ops[] = {
-      {"==", ir::Op::Eq},        {"<>", ir::Op::Ne},          {"<=", ir::Op::Le},
-      {">=", ir::Op::Ge},        {"<", ir::Op::Lt},           {">", ir::Op::Gt},
-      {"+", ir::Op::Add},        {"-", ir::Op::Sub},          {"AND", ir::Op::LogicalAnd},
-      {"OR", ir::Op::LogicalOr}, {"XOR", ir::Op::LogicalXor},
-  };
-  for (const auto& [s, op] : ops) {
-    if (t_.substr(p_, s.size()) != s) continue;
-    if (isLetter(s[0]) && letters(p_) != s) continue; // a keyword is its whole letter run
-    p_ += s.size();
-    return op;
-  }
-  return std::nullopt;
-}
-
-std::optional<ir::Op> Parser::op1() {
-  spaces();
-  if (t_.substr(p_, 2) == "**") {
-    p_ += 2;
-    return ir::Op::Pow;
-  }
-  if (p_ < t_.size() && (t_[p_] == '*' || t_[p_] == '/'))
-    return t_[p_++] == '*' ? ir::Op::Mul : ir::Op::Div;
-  if (letters(p_) == "MOD") {
-    p_ += 3;
-    return ir::Op::FloorMod;
-  }
-  return std::nullopt;
+  const auto found = operatorAt(t_.substr(p_), level);
+  if (!found) return std::nullopt;
+  p_ += found->first;
+  return found->second;
 }
 
 // two levels, each left to right: `** * / MOD`, then `+ - relational AND OR XOR` (§6.3)
@@ -470,7 +379,7 @@ std::optional<ir::Expr> Parser::expr() {
   auto lhs = term();
   while (lhs) {
     const std::size_t before = p_;
-    auto op = op2();
+    auto op = binaryOp(2);
     if (!op) break;
     auto rhs = term();
     if (!rhs) return std::nullopt;
@@ -488,7 +397,7 @@ std::optional<ir::Expr> Parser::term() {
   const std::size_t at = p_;
   auto lhs = factor();
   while (lhs) {
-    auto op = op1();
+    auto op = binaryOp(1);
     if (!op) break;
     auto rhs = factor();
     if (!rhs) return std::nullopt;
@@ -553,9 +462,7 @@ std::optional<ir::Expr> Parser::parenthesised(std::size_t at) {
 }
 
 std::optional<ir::Expr> Parser::function(std::size_t at, std::string_view name) {
-  const FuncName* f = nullptr;
-  for (const FuncName& k : kFunctions)
-    if (k.name == name) f = &k;
+  const ir::Func* f = functionNamed(name);
   if (!f) {
     syntax(at, name.size(), fmt::format("unknown function '{}'", name));
     return std::nullopt;
@@ -568,7 +475,7 @@ std::optional<ir::Expr> Parser::function(std::size_t at, std::string_view name) 
   auto a = parenthesised(p_);
   if (!a) return std::nullopt;
   std::vector<ir::Expr> args{std::move(a->args[0])};
-  ir::Func func = f->func;
+  ir::Func func = *f;
   if (func == ir::Func::Atan && peek2("/")) { // ATAN(a)/(b): the angle of (b, a) (§6.3)
     const std::size_t slash = p_;
     ++p_;

@@ -1,7 +1,9 @@
 #include "dialects/wl4/control_flow.h"
 
 #include "dialects/wl4/system_programs.h"
+#include "dialects/wl4/system_variables.h"
 #include "dialects/wl4/word_value_rules.h"
+#include "ir/block.h"
 
 namespace gcx::wl4 {
 
@@ -31,6 +33,20 @@ RemapTable remaps() {
     cycle.spec = "wl4.md §5.1";
     t.rows.push_back(cycle);
   }
+  // G31, G70-G75, G77, G78: the block's axis words are the target of system program %1, which
+  // does all the moving, dispatched on #108 (§5.1, §5.3)
+  for (int g : {31, 70, 71, 72, 73, 74, 75, 77, 78}) {
+    Remap open;
+    open.address = "G";
+    open.code = g;
+    open.action = FlowAction::CallOpenCycle;
+    open.program = ProgramSource::Fixed;
+    open.fixedProgram = "1";
+    open.frame = LocalFrame::Copy;
+    open.cycleWords = "IP"; // G31: lead increment and phase (#136, #140)
+    open.spec = "wl4.md §5.1";
+    t.rows.push_back(open);
+  }
   Remap cancel;
   cancel.address = "G";
   cancel.code = 80;
@@ -40,6 +56,16 @@ RemapTable remaps() {
   cancel.spec = "wl4.md §5.1";
   t.rows.push_back(cancel);
   return t;
+}
+
+// G4 X (a dwell), G36 (home), G51 X-1 (mirror), G92 (set coordinates): axis words that are no
+// move, so no canned cycle runs after the block (§5.1)
+bool axisWordsNoMove(const ir::Block& flat) {
+  for (const ir::Word& w : flat.words)
+    if (w.is('G') && w.isLiteral() &&
+        (w.number == 4 || w.number == 36 || w.number == 51 || w.number == 92))
+      return true;
+  return false;
 }
 
 } // namespace
@@ -64,7 +90,12 @@ const ControlFlow& controlFlow() {
       return std::vector<std::string>{unit + ext};
     };
     f.programLabel = [](const std::string& unit) { return "%" + unit; };
-    f.systemProgram = &systemProgram; // %81-%89 (§5.2)
+    f.systemProgram = &systemProgram; // %1, %81-%89 (§5.2, §5.4)
+    f.systemVariables = [](machine::Interpreter& m, diag::Engine& d) {
+      return std::unique_ptr<macro::SystemVariableStore>(std::make_unique<SystemVariables>(m, d));
+    };
+    f.axisWordsNoMove = &axisWordsNoMove;
+    f.maxCallDepth = 5; // the main program and 5 levels; cycles and %1 count (§6.7)
     return f;
   }();
   return flow;

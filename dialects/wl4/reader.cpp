@@ -17,7 +17,7 @@ Reader::Reader(std::istream& in, FileId file, diag::Engine& diags,
 
 bool Reader::next(ir::Block& out) {
   while (bytes_.next(raw_)) {
-    if (raw_.failed || !parseBlock(raw_, out, diags_) || duplicateLabel(out)) {
+    if (raw_.failed || !parse(out) || duplicateLabel(out)) {
       ++failed_;
       continue;
     }
@@ -25,6 +25,12 @@ bool Reader::next(ir::Block& out) {
     return true;
   }
   return false;
+}
+
+bool Reader::parse(ir::Block& out) {
+  if (fastPath_) return parseBlock(raw_, out, diags_);
+  if (!grammar_) grammar_ = std::make_unique<GrammarParser>();
+  return grammar_->parse(raw_, out, diags_);
 }
 
 bool Reader::duplicateLabel(const ir::Block& b) {

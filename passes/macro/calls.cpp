@@ -1,6 +1,7 @@
 // Calls and returns with repeat counts (nct-macro.md §5.1-§5.4): which program a remapped code
 // calls, the callee's local frame (shared, bound from arguments, or a copy), how often it runs,
 // and where the caller continues.
+#include <algorithm>
 #include <fmt/format.h>
 #include <map>
 
@@ -28,9 +29,11 @@ bool bareReference(const ir::Expr& e) {
 } // namespace
 
 bool Expander::tooDeep(const SourceRange& where) {
-  if (static_cast<int>(stack_.size()) <= limits_.maxDepth) return false;
+  const int limit =
+      flow_.maxCallDepth > 0 ? std::min(flow_.maxCallDepth, limits_.maxDepth) : limits_.maxDepth;
+  if (static_cast<int>(stack_.size()) <= limit) return false;
   fail(diag::code::CallNesting, where,
-       fmt::format("more than {} nested subprogram and macro calls", limits_.maxDepth));
+       fmt::format("more than {} nested subprogram and macro calls", limit));
   return true;
 }
 
@@ -129,8 +132,10 @@ bool Expander::call(Frame& f, const ir::Block& b, const CodeMatch& m) {
   if (!callee) return false;
   machine_.setCalledProgram(m.program ? static_cast<int>(m.program->number) : 0);
   // a shared-frame call sees every modal call again; a macro sees what its caller sees
-  const std::size_t visible =
-      r.frame == LocalFrame::Shared ? static_cast<std::size_t>(-1) : f.modalVisible;
+  // an open cycle's program sees none: it runs as one block of its caller (wl4.md §5.1)
+  const std::size_t visible = r.action == FlowAction::CallOpenCycle ? 0
+                              : r.frame == LocalFrame::Shared       ? static_cast<std::size_t>(-1)
+                                                                    : f.modalVisible;
   return pushFrame(f, callee, r.frame, std::move(args), times, describe(m, unit), b.range, visible);
 }
 

@@ -130,6 +130,11 @@ private:
   bool repeatBlock(Frame& f, const ir::Block& flat, const CodeMatch& m);
   std::string describe(const CodeMatch& m, const std::string& unit) const;
   bool tooDeep(const SourceRange& where);
+  /// A block with a message that jumps to itself: true after reporting the error its message
+  /// names (ordered_blocks.cpp).
+  bool errorStop(const Frame& f);
+  /// FlowAction::CallOpenCycle (open_cycles.cpp).
+  bool openCycleCall(Frame& f, const ir::Block& b, const ir::Block& flat, const CodeMatch& m);
 
   // modal_calls.cpp
   bool modalBlock(Frame& f, const ir::Block& b, const ir::Block& flat, const CodeMatch& m);

@@ -193,6 +193,8 @@ bool Expander::ncFlat(Frame& f, const ir::Block& b, ir::Block& flat) {
     }
   }
   if (primary.row && isModal(primary.row->action)) return modalBlock(f, b, flat, primary);
+  if (primary.row && primary.row->action == FlowAction::CallOpenCycle)
+    return openCycleCall(f, b, flat, primary);
   // a modal call made by every block: the block's words are the arguments (§5.6 E2)
   if (const ModalCall* m = visibleModalCall(); m && m->everyBlock && !flat.words.empty())
     return everyBlockCall(f, b, flat, *m);
@@ -241,7 +243,8 @@ bool Expander::execute(Frame& f, const ir::Block& b, const ir::Block& flat) {
   }
   // a modal call after each motion block: the most recent visible one (§5.5 D2, D3)
   if (const ModalCall* m = visibleModalCall();
-      m && !m->everyBlock && movesAxes(flat, flow_.wordValues.coordinateLetters)) {
+      m && !m->everyBlock && movesAxes(flat, flow_.wordValues.coordinateLetters) &&
+      !(flow_.axisWordsNoMove && flow_.axisWordsNoMove(flat))) {
     const std::size_t index = static_cast<std::size_t>(m - modalCalls_.data());
     return pushFrame(f, m->program, m->frame, m->args, m->times, m->what, b.range, index);
   }

@@ -103,6 +103,23 @@ bool Expander::tailJump(const Frame& f, const ir::Stmt& s, BlockTail& tail) {
   return true;
 }
 
+bool Expander::errorStop(const Frame& f) {
+  // a block with a message that jumps to itself never ends: the cycle programs stop this way
+  // (the error blocks of WL4's %1, M0 and a message, wl4.md §5.3); the call is where to look.
+  // Without a message it is an endless loop like any other (the jump limit).
+  const ir::Block& b = f.program->blocks[f.pc];
+  std::string text;
+  for (const ir::Comment& c : b.comments)
+    if (c.kind == ir::CommentKind::Message) text = c.text;
+  if (text.empty()) return false;
+  const SourceRange where = stack_.size() > 1 ? SourceRange{f.callSite, 1} : b.range;
+  fail(diag::code::ErrorStop, where,
+       fmt::format("{} (the error stop of {})", text,
+                   f.program->name.empty() ? std::string("the program")
+                                           : library_.label(f.program->name)));
+  return true;
+}
+
 bool Expander::advance(Frame& f) {
   if (const LoadedProgram* callee = std::exchange(f.tail.call, nullptr)) {
     if (f.tail.times < 1) return advance(f);
@@ -116,6 +133,7 @@ bool Expander::advance(Frame& f) {
     ++f.pc;
     return true;
   }
+  if (target == f.pc && errorStop(f)) return false;
   if (target <= f.pc && ++jumps_ > limits_.maxJumps)
     return fail(diag::code::RunawayLoop, f.program->blocks[f.pc].range,
                 fmt::format("more than {} backward jumps: runaway loop (exceeded --max-jumps {}; "

@@ -27,6 +27,9 @@ public:
   virtual std::optional<int> numberOf(const std::string& name, std::optional<int> index) const = 0;
   /// The run's main program is the file at `path` (NCT reads its number from a system variable).
   virtual void startMain(const std::string& path) = 0;
+  /// An open cycle's block (FlowAction::CallOpenCycle, words evaluated) is about to call its
+  /// program: the store takes its target. False after reporting a located error.
+  virtual bool openCycle(const ir::Block& /*flat*/, const ir::Word& /*code*/) { return true; }
 };
 
 } // namespace gcx::macro

@@ -20,6 +20,16 @@ public:
   void event(const motion::Event&) override {}
 };
 
+// Whether the dialect's machine runs canned cycles itself (NCT G81, FMS-3000 G81 by levels).
+// WL4's G81-G89 and G70-G78 are programs, which --expand flattens like any other call.
+bool runsCyclesItself(const Profile& p) {
+  for (const GCodeSpec& g : p.gcodes)
+    if (g.action == GAction::DrillCycle || g.action == GAction::TurningCycle ||
+        g.action == GAction::LevelDrillCycle)
+      return true;
+  return false;
+}
+
 int expandToDialect(Session& s, const Dialect& target, const ExpandOptions& opt,
                     const machine::Setup& setup) {
   if (opt.expand != "macros,subprograms" && opt.expand != "subprograms,macros") {
@@ -28,7 +38,7 @@ int expandToDialect(Session& s, const Dialect& target, const ExpandOptions& opt,
                 "cycles is not implemented yet");
     return UsageError;
   }
-  if (!target.emits().has(emit::Construct::CannedCycles)) {
+  if (!target.emits().has(emit::Construct::CannedCycles) && runsCyclesItself(target.profile())) {
     reportUsage("--to " + target.name +
                 " has no canned cycles, and expanding cycles is not implemented yet");
     return UsageError;

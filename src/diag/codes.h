@@ -101,6 +101,8 @@ inline constexpr const char* Wl4FanucComment = "GCXW20";     // `(` where a word
 inline constexpr const char* Wl4WholeMillimetres = "GCXW21"; // X1030 is 1030 mm
 inline constexpr const char* Wl4FanucReturnLevel = "GCXW22"; // G98/G99
 inline constexpr const char* Wl4FanucCall = "GCXW23";        // M98 is no call
+inline constexpr const char* ErrorStop = "GCX064";      // a block that jumps to itself: %1's stops
+inline constexpr const char* SystemReadOnly = "GCX065"; // WL4 #100 and up are read-only
 
 // --- gcx: setup file (--setup FILE, src/machine/setup)
 inline constexpr const char* SetupNotJson = "GCX020";

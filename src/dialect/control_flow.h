@@ -45,6 +45,9 @@ enum class FlowAction : unsigned char {
   EndProgram,          // the program ends here (FMS M98)
   RepeatStart,         // the blocks after this one up to RepeatEnd run repeatWord times (FMS G25 L)
   RepeatEnd,           // the last block of a repeated fragment (FMS M25)
+  /// Run a program once, the block's axis words its target: the other words run first, the
+  /// system variables take the target, and the program moves (WL4 G70 calls %1, wl4.md §5.1).
+  CallOpenCycle,
 };
 
 /// Where the called program's name comes from.
@@ -96,6 +99,9 @@ struct Remap {
   /// ModalCall: the registration replaces the one in force instead of nesting on it (WL4's
   /// group 7 holds one cycle: G81 then G83 drills by %83 only, and G80 cancels it).
   bool replacesModalCall = false;
+  /// CallOpenCycle: letters besides the axes that belong to the cycle, not to the block's NC
+  /// part (WL4 G31: I the lead increment, P the phase).
+  std::string cycleWords;
   const char* spec = ""; // where the dialect specifies the row, for messages
 };
 
@@ -204,6 +210,11 @@ struct ControlFlow {
   LocalFrame callFrame = LocalFrame::Shared;
   /// `#n=e` may stand inside an expression and assigns there (WL4, wl4.md §6.4).
   bool assignsInExpressions = false;
+  /// A block whose axis words are no move (WL4 `G4 X2`, `G92 X0`): no modal call after it;
+  /// null: every block with an axis word moves.
+  std::function<bool(const ir::Block& flat)> axisWordsNoMove;
+  /// Calls may nest this deep (WL4: 5, wl4.md §6.7); 0: as deep as the run's --max-depth.
+  int maxCallDepth = 0;
   /// Whether a block number is a label a Jump statement may reach (WL4: written with a leading
   /// 0, `N010`, wl4.md §1.8); null: every block number is.
   std::function<bool(std::string_view sequenceText)> isLabel;

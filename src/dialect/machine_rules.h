@@ -136,6 +136,10 @@ struct CompensationRules {
 /// block and the next, and the direction angle of a line. Empty: the dialect has none.
 struct ContourWords {
   std::string chamfer, rounding, angle;
+  /// A rotary axis letter (A-C) that is the chamfer word instead when the setup's parameter
+  /// chamferAxisKey is 1 (WL4 B with `B.role = chamfer`, wl4.md §0.2, §3.16); 0: none.
+  char chamferAxis = 0;
+  std::string chamferAxisKey;
 };
 
 /// What the machine model follows for a dialect, beside its code tables.

@@ -280,6 +280,10 @@ bool Interpreter::executeBlock(const ir::Block& block) {
                 fmt::format("the value of {} is an expression; expressions are evaluated by the "
                             "macro pass, which is not implemented yet",
                             bad->address));
+  if (const ContourWords& c = profile_.machine.contour;
+      c.chamferAxis >= 'A' && c.chamferAxis <= 'C' && parameter(c.chamferAxisKey, 0) == 1)
+    if (const ir::Word*& axis = w.extra[c.chamferAxis - 'A']) // the chamfer leg, not an axis
+      w.chamfer = std::exchange(axis, nullptr);
   for (const ir::Word* o : w.other)
     if (!o->is('N') && !o->is('O'))
       return fail(diag::code::NotImplemented, o->range,

@@ -137,12 +137,16 @@ SetupSyntax setupSyntax(const std::string& dialect, const Profile& profile) {
   s.parameterPrefix = r.parameterKeyPrefix;
   s.parameterDigits = r.parameterKeyPrefix.empty() ? 0 : r.parameterKeyDigits;
   s.parameterBits = r.parameterBits;
+  // every key the machine reads: the settings, and the chamfer-axis switch
+  std::vector<const char*> keys;
   for (const SettingSpec& setting : r.settings)
-    for (const char* key : {setting.key, setting.alias})
-      if (key && !s.parameterKey(key) &&
-          std::find(s.namedParameters.begin(), s.namedParameters.end(), key) ==
-              s.namedParameters.end())
-        s.namedParameters.push_back(key);
+    keys.insert(keys.end(), {setting.key, setting.alias});
+  keys.push_back(r.contour.chamferAxisKey.c_str());
+  for (const char* key : keys)
+    if (key && *key && !s.parameterKey(key) &&
+        std::find(s.namedParameters.begin(), s.namedParameters.end(), key) ==
+            s.namedParameters.end())
+      s.namedParameters.push_back(key);
   s.workOffsetNames = r.workOffsetNames;
   s.extendedWorkOffsetPrefix = r.extendedWorkOffsetPrefix;
   s.extendedWorkOffsets = r.extendedWorkOffsetPrefix.empty() ? 0 : r.extendedWorkOffsets;

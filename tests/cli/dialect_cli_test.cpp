@@ -1,48 +1,21 @@
 // The command line's dialect plumbing: --encoding, and --dialect / expand --to from the registry.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <fmt/format.h>
-#include <fstream>
-#include <unistd.h>
-
-#include "support/test_support.h"
+#include "support/cli_folder.h"
 
 namespace gcx::test {
 namespace {
 
-struct Result {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
+using Result = CliResult;
 
 class DialectCli : public testing::Test {
 protected:
-  void SetUp() override {
-    // ctest runs tests as parallel processes: a folder of this process's own
-    dir_ = fs::temp_directory_path() / fmt::format("gcx-dialect-cli-{}", getpid());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   fs::path write(const std::string& name, const std::string& bytes) {
-    const fs::path p = dir_ / name;
-    std::ofstream(p, std::ios::binary) << bytes;
-    return p;
+    return folder_.write(name, bytes);
   }
-  Result gcx(const std::string& args) {
-    const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
-    const std::string cmd = fmt::format("cd {} && {} {} >{} 2>{}", dir_.string(), GCX_BINARY, args,
-                                        out.string(), err.string());
-    Result r;
-    r.exitCode = WEXITSTATUS(std::system(cmd.c_str()));
-    r.out = readFile(out);
-    r.err = readFile(err);
-    return r;
-  }
+  Result gcx(const std::string& args) { return folder_.gcx(args); }
 
-  fs::path dir_;
+  CliFolder folder_{"dialect-cli"};
 };
 
 TEST_F(DialectCli, FmtOfAKoi8rFileWritesItsCommentsInUtf8) {
@@ -100,7 +73,7 @@ TEST_F(DialectCli, ExpandToAnotherDialectIsRefused) {
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_EQ(r.err, "gcx: error: --to fms3000 from a nct program is a translation between "
                    "dialects, which is not implemented yet (--to canonical writes its motion)\n");
-  EXPECT_FALSE(fs::exists(dir_ / "out.fms"));
+  EXPECT_FALSE(fs::exists(folder_.path() / "out.fms"));
   r = gcx("expand O0001.nct --to wl4");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_EQ(r.err, "gcx: error: --to wl4 from a nct program is a translation between dialects, "

@@ -44,6 +44,21 @@ TEST(Wl4Cycles_5_2, G82DwellsAtTheBottomByItsG4X) {
             (V{"R 0,0,10", "R 5,0,10", "R 5,0,1", "L 5,0,-5 F100", "DW 2.5s", "R 5,0,1", "END"}));
 }
 
+TEST(Wl4Cycles_5_1, AUserDwellG4XDwellsAndCallsNoCycle) {
+  // G4 X2 has an axis letter but is no move: it dwells 2 s, %81 does not run (§5.1, §3.9)
+  MacroRun r = runWl4("%P\nG90 G0 X0 Y0 Z10\nG81 #2=1 #3=-5 F100\nX5\nG4 X2\nG80\nM2\n%\n");
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(r.motion(),
+            (V{"R 0,0,10", "R 5,0,10", "R 5,0,1", "L 5,0,-5 F100", "R 5,0,1", "DW 2s", "END"}));
+}
+
+TEST(Wl4Cycles_5_1, G92AndAMirrorWithAxisWordsCallNoCycle) {
+  MacroRun r =
+      runWl4("%P\nG90 G0 X0 Y0 Z10\nG81 #2=1 #3=-5 F100\nG92 X0 Y0\nG51 X-1\nG80\nM2\n%\n");
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(r.motion(), (V{"R 0,0,10", "END"}));
+}
+
 TEST(Wl4Cycles_5_1, AUsersOwnProgramBesideTheMainOverridesTheShippedCycle) {
   // %81 in a file 81.wl4 beside the program: a single rapid to #3 instead of the drilling
   MacroRun r = runWl4({{"main.wl4", "%P\nG90 G0 X0 Y0 Z10\nG81 #2=1 #3=-5\nX5\nG80\nM2\n%\n"},
@@ -102,7 +117,7 @@ TEST(Wl4Cycles_5_2, EveryShippedProgramReadsCleanlyAsTheUnitItIsCalled) {
     EXPECT_EQ(parsed.blocks.front().programName, p.unit);
     units.push_back(p.unit);
   }
-  EXPECT_EQ(units, (V{"81", "82", "83", "84", "85", "86", "87", "88", "89"}));
+  EXPECT_EQ(units, (V{"1", "81", "82", "83", "84", "85", "86", "87", "88", "89"}));
 }
 
 } // namespace

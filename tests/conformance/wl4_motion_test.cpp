@@ -1,5 +1,5 @@
 // WL4 motion semantics (wl4.md §3): G12/G13 fillets with the exact geometry of §3.5 (TV1, TV2,
-// the table of §3.5), dwell by G4 E.
+// the table of §3.5), dwell by G4 E, the automatic chamfer B (§3.16).
 #include <gtest/gtest.h>
 
 #include "support/wl4_support.h"
@@ -69,6 +69,38 @@ TEST(Wl4Motion_8, TV21_SelectingAWorkOffsetEndsG92) {
     if (e.kind == motion::Kind::Rapid)
       machine.push_back(n4(e.end.x()) + "," + n4(e.end.y()) + "," + n4(e.end.z()));
   EXPECT_EQ(machine, (V{"-100,-250,0", "200,100,0"}));
+}
+
+} // namespace
+} // namespace gcx::test
+
+namespace gcx::test {
+namespace {
+
+machine::Setup bChamfer() {
+  machine::Setup s;
+  s.parameters["b_chamfer"] = 1; // the reference profile's B.role = chamfer (§0.2)
+  return s;
+}
+
+TEST(Wl4Motion_3_16, BIsTheChamferLegBetweenTwoLinesWithBRoleChamfer) {
+  // TV19's program on the mill profile's XY plane (X a plain coordinate, no diameter): the
+  // corner (100,70) is cut from 10 before it on the first line to 10 after it on the second
+  MacroRun r = runWl4("%P\nG90 G17 G0 X40 Y70\nG1 X100 F100 B10\nY10\nM2\n%\n", bChamfer());
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(r.motion(),
+            (V{"R 40,70,0", "L 90,70,0 F100", "L 100,60,0 F100", "L 100,10,0 F100", "END"}));
+}
+
+TEST(Wl4Motion_3_16, WithoutBRoleChamferBIsTheRotaryAxis) {
+  MacroRun r = runWl4("%P\nG90 G17 G0 X40 Y70\nG1 X100 F100 B10\nY10\nM2\n%\n");
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(r.motion(), (V{"R 40,70,0", "L 100,70,0 B10 F100", "L 100,10,0 B10 F100", "END"}));
+}
+
+TEST(Wl4Motion_3_16, ALegLongerThanTheNextMoveIsAnError) {
+  MacroRun r = runWl4("%P\nG90 G17 G0 X40 Y70\nG1 X100 F100 B10\nY65\nM2\n%\n", bChamfer());
+  EXPECT_EQ(errorsAt(r), (V{"3:1 GCX074"})) << r.rendered; // the chamfer does not fit
 }
 
 } // namespace

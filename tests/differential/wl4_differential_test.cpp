@@ -55,5 +55,12 @@ INSTANTIATE_TEST_SUITE_P(Wl4, Wl4Differential, testing::ValuesIn(names()),
                            return twinTestName(p.param);
                          });
 
+TEST(Wl4DifferentialCorpus, HasAtLeastTwentyProgramsEachWithItsTwin) {
+  const std::vector<std::string> programs = names();
+  EXPECT_GE(programs.size(), 20u);
+  for (const std::string& n : programs)
+    EXPECT_TRUE(fs::exists(folder() / (n + ".ngc"))) << n;
+}
+
 } // namespace
 } // namespace gcx::test

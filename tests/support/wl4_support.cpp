@@ -11,11 +11,12 @@
 
 namespace gcx::test {
 
-Parsed parseWl4(const std::string& text, front::Encoding encoding) {
+Parsed parseWl4(const std::string& text, front::Encoding encoding, bool fastPath) {
   Parsed p;
   const FileId f = p.sources.addBuffer("test.wl4", text);
   std::istringstream in(text);
   wl4::Reader reader(in, f, p.diags, encoding);
+  reader.setFastPath(fastPath);
   check::StaticChecker checker(wl4::profile(), p.diags);
   ir::Block b;
   while (reader.next(b)) {

@@ -13,8 +13,10 @@
 
 namespace gcx::test {
 
-/// Parses WL4 text (UTF-8 unless `encoding` says otherwise) and runs the static checks.
-Parsed parseWl4(const std::string& text, front::Encoding encoding = front::Encoding::Utf8);
+/// Parses WL4 text (UTF-8 unless `encoding` says otherwise) and runs the static checks; without
+/// the fast path every block goes through the grammar (grammar/WL4.g4).
+Parsed parseWl4(const std::string& text, front::Encoding encoding = front::Encoding::Utf8,
+                bool fastPath = true);
 /// Each block printed back as WL4 text, one string per block.
 std::vector<std::string> printedWl4(const Parsed& p);
 /// Runs `main` among `files` (name -> WL4 text, written in KOI8-R's ASCII subset or as given).

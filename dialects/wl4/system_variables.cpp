@@ -1,0 +1,111 @@
+#include "dialects/wl4/system_variables.h"
+
+#include <fmt/format.h>
+
+#include "diag/codes.h"
+
+namespace gcx::wl4 {
+
+namespace {
+
+// #101-#107: the modal groups of §2.2, by the profile's group (Table 3) they report
+int tableGroup(int number) {
+  switch (number) {
+  case 101:
+    return 1; // G0-G3, G32, G33
+  case 102:
+    return 3; // G40-G42
+  case 103:
+    return 5; // G53-G59, G92
+  case 104:
+    return 8; // G90/G91
+  case 105:
+    return 9; // G94/G95
+  case 106:
+    return 10; // G96/G97
+  case 107:
+    return 7; // G80-G89
+  }
+  return 0;
+}
+
+} // namespace
+
+std::optional<macro::Value> SystemVariables::read(int number, const SourceRange& where) {
+  if (const int group = tableGroup(number))
+    return macro::Value::of(machine_.modalCode(group) / 10.0);
+  const machine::ModalState& s = machine_.state();
+  switch (number) {
+  case 112: // M3-M5
+    return macro::Value::of(s.spindleDirection > 0 ? 3 : s.spindleDirection < 0 ? 4 : 5);
+  case 120:
+    return macro::Value::of(s.lastS);
+  case 121:
+    return macro::Value::of(s.selectedTool);
+  case 139:
+    return macro::Value::of(s.feed);
+  }
+  if (number == 108 || (number >= 130 && number <= 140)) {
+    auto it = cycle_.find(number);
+    return macro::Value::of(it == cycle_.end() ? 0.0 : it->second);
+  }
+  diags_.error(diag::code::SystemReadOnly, where,
+               fmt::format("system variable #{} is not modelled by gcx (wl4.md §6.2)", number));
+  return std::nullopt;
+}
+
+bool SystemVariables::write(int number, const macro::Value&, const SourceRange& where) {
+  diags_.error(
+      diag::code::SystemReadOnly, where,
+      fmt::format("#{} is a system variable: #100 and up are read-only (wl4.md §6.1)", number));
+  return false;
+}
+
+std::optional<macro::Value> SystemVariables::readNamed(const std::string& name, std::optional<int>,
+                                                       const SourceRange& where) {
+  diags_.error(diag::code::SystemReadOnly, where,
+               fmt::format("#_{}: WL4 has no named variables", name));
+  return std::nullopt;
+}
+
+bool SystemVariables::writeNamed(const std::string& name, std::optional<int>, const macro::Value&,
+                                 const SourceRange& where) {
+  diags_.error(diag::code::SystemReadOnly, where,
+               fmt::format("#_{}: WL4 has no named variables", name));
+  return false;
+}
+
+bool SystemVariables::openCycle(const ir::Block& flat, const ir::Word& code) {
+  const int cycle = static_cast<int>(code.number);
+  if ((cycle == 77 || cycle == 78) && flat.find('P')) {
+    diags_.error(diag::code::NotImplemented, flat.find('P')->range,
+                 fmt::format("G{} with P Q is the internal contour cycle: not supported yet "
+                             "(wl4.md §5.6)",
+                             cycle));
+    return false;
+  }
+  if (cycle == 31) {
+    diags_.error(diag::code::NotImplemented, code.range,
+                 "G31 threads with G32, which gcx does not execute yet (wl4.md §3.6, §5.5)");
+    return false;
+  }
+  const machine::Vec3& at = machine_.programPosition();
+  const bool incremental = machine_.state().incremental;
+  cycle_.clear();
+  cycle_[108] = cycle;
+  const char* absolute = "XYZ";
+  const char* relative = "UVW";
+  for (int a = 0; a < 3; ++a) {
+    double target = at[a];
+    if (const ir::Word* w = flat.find(absolute[a]))
+      target = incremental ? at[a] + w->number : w->number;
+    if (const ir::Word* w = flat.find(relative[a])) target = at[a] + w->number;
+    cycle_[130 + 2 * a] = target;         // #130 #132 #134: the target
+    cycle_[131 + 2 * a] = target - at[a]; // #131 #133 #135: the increment from here
+  }
+  if (const ir::Word* i = flat.find('I')) cycle_[136] = i->number;
+  if (const ir::Word* p = flat.find('P')) cycle_[140] = p->number;
+  return true;
+}
+
+} // namespace gcx::wl4
