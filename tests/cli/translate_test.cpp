@@ -3,51 +3,25 @@
 // no file; a batch translates a tree, each program in its own process, with a report.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <fmt/format.h>
-#include <fstream>
 #include <sys/stat.h>
-#include <unistd.h>
 
-#include "support/test_support.h"
+#include "support/cli_folder.h"
 
 namespace gcx::test {
 namespace {
 
-struct Result {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
+using Result = CliResult;
 
 class TranslateCli : public testing::Test {
 protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / fmt::format("gcx-translate-{}", getpid());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   fs::path write(const std::string& name, const std::string& bytes) {
-    const fs::path p = dir_ / name;
-    fs::create_directories(p.parent_path());
-    std::ofstream(p, std::ios::binary) << bytes;
-    return p;
+    return folder_.write(name, bytes);
   }
-  Result gcx(const std::string& args) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string cmd = fmt::format("cd {} && {} {} >{} 2>{}", dir_.string(), GCX_BINARY, args,
-                                        out.string(), err.string());
-    Result r;
-    r.exitCode = WEXITSTATUS(std::system(cmd.c_str()));
-    r.out = readFile(out);
-    r.err = readFile(err);
-    fs::remove(out), fs::remove(err);
-    return r;
-  }
+  Result gcx(const std::string& args) { return folder_.gcx(args); }
 
-  fs::path dir_;
+  CliFolder folder_{"translate"};
+  const fs::path& dir_ = folder_.path();
 };
 
 constexpr const char* kProgram = "G90 G0 X10 Y5\nG1 X20 F100\nM30\n";

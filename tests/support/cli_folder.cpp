@@ -20,6 +20,7 @@ CliFolder::~CliFolder() {
 
 fs::path CliFolder::write(const std::string& name, const std::string& bytes) const {
   const fs::path p = dir_ / name;
+  fs::create_directories(p.parent_path());
   std::ofstream(p, std::ios::binary) << bytes;
   return p;
 }
@@ -32,6 +33,7 @@ CliResult CliFolder::gcx(const std::string& args) const {
   r.exitCode = WEXITSTATUS(std::system(cmd.c_str()));
   r.out = readFile(out);
   r.err = readFile(err);
+  fs::remove(out), fs::remove(err); // the folder holds only what the test and gcx wrote
   return r;
 }
 

@@ -21,6 +21,7 @@ public:
   CliFolder(const CliFolder&) = delete;
   CliFolder& operator=(const CliFolder&) = delete;
 
+  /// Writes name (with its folders) under the folder.
   fs::path write(const std::string& name, const std::string& bytes) const;
   /// Runs `gcx args` in the folder.
   CliResult gcx(const std::string& args) const;
