@@ -86,7 +86,9 @@ MachineRules machineRules() {
   r.compensation.breakerMCodes = {MAction::Stop, MAction::OptionalStop, MAction::End,
                                   MAction::EndRewind};
   r.compensation.lengthWordBreaks = true;
-  r.contour = {",C", ",R", ",A"}; // chapter 17 (nct.md §4)
+  r.contour.chamfer = ",C"; // chapter 17 (nct.md §4)
+  r.contour.rounding = ",R";
+  r.contour.angle = ",A";
   return r;
 }
 
