@@ -117,7 +117,8 @@ bool CompensationStage::event(const motion::Event& e, motion::Sink& out) {
     return true;
   }
   if (e.kind == Kind::End || e.kind == Kind::Stop) {
-    if (pending_ && !releaseAlone(true, out)) return false;
+    // a G40 block without plane motion still ends the waiting element on its perpendicular
+    if (pending_ && !releaseAlone(!cancelPending_, out)) return false;
     emitHeld(out);
     cancelPending_ = false;
     if (side_ != 0) restart_ = true;

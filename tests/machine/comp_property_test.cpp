@@ -54,13 +54,18 @@ double segmentSegment(const P2& a, const P2& b, const P2& c, const P2& d) {
 }
 
 /// A polygon about the origin, counter-clockwise, star-shaped from the origin (convex when all
-/// radii are equal), vertices on a 0.002 mm grid.
+/// radii are equal), vertices on a 0.002 mm grid. The origin, where an inside contour starts,
+/// lies strictly inside: each edge subtends less than 180° there. (A triangle whose edge 0
+/// passes through the origin makes the start-up block a zero move, whose r-move the next block
+/// makes: CompNctSpec_3_17_2.StartUpOnTheContourMovesInTheNextBlock.)
 std::vector<P2> genPolygon(bool convex) {
   const int n = *rc::gen::inRange(3, 10);
   std::vector<double> angles;
   const double gap = 360.0 / n;
-  for (int i = 0; i < n; ++i) // one vertex in each sector, at least 20 % of a sector apart
-    angles.push_back(gap * i + *rc::gen::inRange(0, 60) / 100.0 * gap);
+  // one vertex in each sector at 0-49 % of it: neighbours are 51-149 % of a sector apart, below
+  // 180° also for a triangle
+  for (int i = 0; i < n; ++i)
+    angles.push_back(gap * i + *rc::gen::inRange(0, 50) / 100.0 * gap);
   const double radius = *rc::gen::inRange(60, 100);
   std::vector<P2> out;
   for (double a : angles) {
