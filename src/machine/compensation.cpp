@@ -216,7 +216,17 @@ bool CompensationStage::element(const motion::Event& e, motion::Sink& out) {
       return fail(diag::code::CompNoIntersection, a.e.from,
                   "no intersection point of the compensated paths at the end of this block "
                   "(G41, G42)");
-    if (!release(c.points, c.arcAbout, out)) return false;
+    std::optional<Vec2> centre;
+    if (c.shiftedArc) { // nct.md §3.17.4: the programmed radius about a shifted centre
+      centre = comp::shiftedCentre(planar(tool_), c.points.front(), (a.path.a - a.path.c).norm(),
+                                   a.path.c);
+      if (!centre)
+        return fail(diag::code::CompNoIntersection, a.e.from,
+                    "the direction of compensation cannot change at the end of this arc: no "
+                    "intersection point, and no arc of its radius reaches the next block's "
+                    "perpendicular (G41, G42)");
+    }
+    if (!release(c.points, c.arcAbout, out, centre)) return false;
   } else if (!(startPending_ && blockIndex_ == startBlock_) && !restart_) {
     // the start-up block had no plane motion: first a move of r perpendicular to the start of
     // this element, in its motion mode (nct.md §3.17.2)
@@ -237,20 +247,27 @@ bool CompensationStage::element(const motion::Event& e, motion::Sink& out) {
   return true;
 }
 
-bool CompensationStage::release(const std::vector<Vec2>& points, bool arcAbout, motion::Sink& out) {
+bool CompensationStage::release(const std::vector<Vec2>& points, bool arcAbout, motion::Sink& out,
+                                const std::optional<Vec2>& centre) {
   const motion::PlaneAxes ax = motion::axesOf(plane_);
   const Element a = *pending_;
   pending_.reset();
   if (points.empty()) return true;
   const Vec2 from = planar(tool_), to = points.front();
+  const Vec2 about = centre ? *centre : a.path.c;
   motion::Event m = a.e;
   m.start = tool_;
   m.extraStart = toolExtra_;
   m.end = spatial(to, a.e.end[ax.normal]);
   if (a.path.arc) {
-    m.center = spatial(a.path.c, tool_[ax.normal]);
-    m.startRadius = (from - a.path.c).norm();
-    m.endRadius = (to - a.path.c).norm();
+    m.center = spatial(about, tool_[ax.normal]);
+    m.startRadius = (from - about).norm();
+    m.endRadius = (to - about).norm();
+    // a full circle whose compensated end lies past its start still makes its whole turn
+    // first (000:8034-8040)
+    if (a.path.a == a.path.b && (to - from).norm() > kEps &&
+        sweep(from, to, about, a.path.ccw) < M_PI)
+      m.turns = a.e.turns + 1;
   }
   if (options_.interferenceCheck && !a.startUp && (to - from).norm() > kEps) {
     // the compensated move runs against the programmed one (nct.md §3.17.6)
@@ -259,7 +276,7 @@ bool CompensationStage::release(const std::vector<Vec2>& points, bool arcAbout, 
       against = (to - from).dot(a.path.b - a.path.a) < 0;
     } else {
       const double programmed = sweep(a.path.a, a.path.b, a.path.c, a.path.ccw);
-      double compensated = sweep(from, to, a.path.c, a.path.ccw);
+      double compensated = sweep(from, to, about, a.path.ccw);
       if (programmed > 2 * M_PI - 1e-6 && compensated < M_PI) compensated += 2 * M_PI;
       against = std::fabs(compensated - programmed) > M_PI;
     }

@@ -81,7 +81,9 @@ private:
   /// A plane element arrives.
   bool element(const motion::Event& e, motion::Sink& out);
   /// Emits the waiting element to the corner points, the corner's lines, then the held events.
-  bool release(const std::vector<comp::Vec2>& points, bool arcAbout, motion::Sink& out);
+  /// `centre`: the waiting arc runs about this centre instead of its own (a shifted arc).
+  bool release(const std::vector<comp::Vec2>& points, bool arcAbout, motion::Sink& out,
+               const std::optional<comp::Vec2>& centre = {});
   /// The waiting element ends on its end perpendicular (or its programmed end point).
   bool releaseAlone(bool onProgrammedPoint, motion::Sink& out);
   void emitHeld(motion::Sink& out);

@@ -134,9 +134,12 @@ CornerResult corner(const Path2& first, const Path2& second, double dFirst, doub
   if (join == Join::StartUp && tA.isZero()) return out.points = {nB}, out;
   if (join == Join::Cancel && tB.isZero()) return out.points = {nA}, out;
   if (join == Join::Perpendicular) return out.points = dedupe({nA, nB}), out;
-  if (join == Join::Direction) {
+  if (join == Join::Direction) { // 000:8019-8100
+    // no intersection: the first element ends on the perpendicular at the second's start, a
+    // line straight there, an arc on its programmed radius about a shifted centre
     const auto x = meet(offA, offB, inf);
-    out.points = x ? std::vector<Vec2>{*x} : dedupe({nA, nB});
+    out.points = {x ? *x : nB};
+    out.shiftedArc = !x && first.arc;
     return out;
   }
   const double turn = cross(tA, tB), along = tA.dot(tB);
@@ -163,6 +166,16 @@ CornerResult corner(const Path2& first, const Path2& second, double dFirst, doub
   // acute (or offsets that do not meet near the corner): extended vectors, three lines
   out.points = dedupe({nA, nA + r * tA, nB - r * tB, nB});
   return out;
+}
+
+std::optional<Vec2> shiftedCentre(const Vec2& from, const Vec2& to, double radius,
+                                  const Vec2& programmed) {
+  if ((to - from).norm() < kEps) { // a full circle: its centre moves with its start
+    const Vec2 towards = programmed - from;
+    if (towards.norm() < kEps) return std::nullopt;
+    return Vec2(from + towards.normalized() * radius);
+  }
+  return nearest(circleCircle(from, radius, to, radius), programmed);
 }
 
 namespace {

@@ -53,12 +53,22 @@ struct CornerResult {
   std::vector<Vec2> points;
   bool arcAbout = false;       // points = {end of first, start of second}, an arc about the corner
   bool noIntersection = false; // an inner corner whose offsets do not meet (alarm)
+  /// A direction change after an arc whose offsets do not meet: the arc itself runs from its
+  /// compensated start to points.front() on its programmed radius about a shifted centre
+  /// (shiftedCentre; 000:8083-8100).
+  bool shiftedArc = false;
 };
 
 /// The corner at the end of `first` (= start of `second`). dFirst, dSecond: signed offsets
 /// (left positive). `virtualDir`: the start-up's or cancel's I J K direction (nct.md §3.17.2-3).
 CornerResult corner(const Path2& first, const Path2& second, double dFirst, double dSecond,
                     Join join, OuterCorner rule, const std::optional<Vec2>& virtualDir = {});
+
+/// The centre of an arc of radius `radius` from `from` to `to` (a direction change after an
+/// arc, 000:8083-8100): of the two, the one nearer the programmed centre `programmed` [I: the
+/// figure is lost]; nullopt when the chord is longer than the diameter (the alarm's case).
+std::optional<Vec2> shiftedCentre(const Vec2& from, const Vec2& to, double radius,
+                                  const Vec2& programmed);
 
 /// A chamfer or rounding between two elements meeting at a corner (nct.md §4.1): the first
 /// element ends at `endFirst`, a line (or an arc about `centre`) joins `startSecond`.
