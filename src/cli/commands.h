@@ -47,13 +47,14 @@ struct RunOptions {
   std::string setup;
   std::string trace;
   bool stats = false;
+  std::string frame = "machine"; // of the trace (machine, work or program); stats: machine
 };
 struct PlotOptions {
   CommonOptions common;
   std::string setup;
   std::string output;
   std::string view = "xy";
-  std::string frame = "work"; // work or machine
+  std::string frame = "work"; // work, program or machine
 };
 
 struct EquivCommandOptions {

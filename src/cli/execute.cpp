@@ -13,6 +13,8 @@
 #include "cli/setup_dialects.h"
 #include "diag/codes.h"
 #include "machine/interpreter.h"
+#include "motion/program_units.h"
+#include "motion/transform_frame.h"
 #include "motion/work_frame.h"
 #include "passes/check/static_checks.h"
 #include "passes/macro/expander.h"
@@ -123,30 +125,52 @@ void limitMachine(machine::Interpreter& interp, const CommonOptions& opt,
 }
 
 namespace {
-// What the interpreter writes to: the output sink itself, or its work-frame view, which asks the
-// interpreter for the work origin of each event.
+// What the interpreter writes to: the output sink itself, or the chain of adapters in front of
+// it that re-express each event in the work or the program frame, asking the interpreter for
+// the work origin and the transformations in force at each event.
 class FramedSink {
 public:
-  FramedSink(motion::Sink& out, Frame frame)
-      : out_(out), frame_(frame), work_(out, [this] { return interp_->workOrigin(); }) {}
-  motion::Sink& sink() { return frame_ == Frame::Work ? static_cast<motion::Sink&>(work_) : out_; }
+  /// machineOut: a sink that gets the machine frame besides (statistics beside a framed trace).
+  FramedSink(motion::Sink& out, Frame frame, motion::Sink* machineOut)
+      : out_(out), frame_(frame), units_(out),
+        transforms_(units_, [this] { return interp_->transforms().matrix(); }),
+        work_(frame == Frame::Work ? out : static_cast<motion::Sink&>(transforms_),
+              [this] { return interp_->workOrigin(); }) {
+    if (!machineOut) return;
+    both_.add(framed());
+    both_.add(*machineOut);
+  }
+  motion::Sink& sink() { return both_.empty() ? framed() : both_; }
   void bind(const machine::Interpreter& interp) { interp_ = &interp; }
 
 private:
   motion::Sink& out_;
   Frame frame_;
+  motion::ProgramUnits units_;
+  motion::TransformFrame transforms_;
   motion::WorkFrame work_;
+  Tee both_;
   const machine::Interpreter* interp_ = nullptr;
+
+  motion::Sink& framed() { return frame_ == Frame::Machine ? out_ : work_; }
 };
 
+} // namespace
+
+Frame frameNamed(const std::string& name) {
+  return name == "work" ? Frame::Work : name == "program" ? Frame::Program : Frame::Machine;
+}
+
+namespace {
 // Programs with macro statements, variables or calls run through the expansion pass, which
 // loads them whole; everything else streams block by block.
 bool expandProgram(Session& s, const CommonOptions& opt, const machine::Setup& setup,
-                   motion::Sink& out, std::ostream& printOut, Frame frame) {
+                   motion::Sink& out, std::ostream& printOut, Frame frame,
+                   motion::Sink* machineOut) {
   macro::ProgramLibrary library(s.dialect(), s.sources(), s.diags(), opt.libraryDirs);
   const macro::LoadedProgram* main = library.load(s.path());
   if (!main) return false;
-  FramedSink framed(out, frame);
+  FramedSink framed(out, frame, machineOut);
   motion::Sink& sink = framed.sink();
   machine::Interpreter interp(s.dialect().profile(), setup, sink, s.diags());
   framed.bind(interp);
@@ -162,11 +186,12 @@ bool expandProgram(Session& s, const CommonOptions& opt, const machine::Setup& s
 } // namespace
 
 bool executeProgram(Session& s, const CommonOptions& opt, const machine::Setup& setup,
-                    motion::Sink& out, std::ostream& printOut, Frame frame) {
+                    motion::Sink& out, std::ostream& printOut, Frame frame,
+                    motion::Sink* machineOut) {
   if (macro::mayNeedExpansion(s.path(), s.dialect().profile()))
-    return expandProgram(s, opt, setup, out, printOut, frame);
+    return expandProgram(s, opt, setup, out, printOut, frame, machineOut);
   check::StaticChecker checker(s.dialect().profile(), s.diags());
-  FramedSink framed(out, frame);
+  FramedSink framed(out, frame, machineOut);
   motion::Sink& sink = framed.sink();
   machine::Interpreter interp(s.dialect().profile(), setup, sink, s.diags());
   framed.bind(interp);

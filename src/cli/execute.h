@@ -21,16 +21,21 @@ namespace gcx::cli {
 int openWithSetup(Session& s, const std::string& file, const std::string& setupPath,
                   machine::Setup& setup);
 
-/// The frame events reach the sink in: the interpreter's machine frame, or the work frame of
-/// motion/work_frame.h (points relative to the work origin in force at each event).
-enum class Frame { Machine, Work };
+/// The frame events reach the sink in: the interpreter's machine frame; the work frame of
+/// motion/work_frame.h (points relative to the work origin in force at each event); or the
+/// program frame, the work frame taken back through the programmable transformations
+/// (motion/transform_frame.h) and into the program's units (motion/program_units.h).
+enum class Frame { Machine, Work, Program };
+/// The frame --frame names ("machine", "work", "program"; the CLI checks the name).
+Frame frameNamed(const std::string& name);
 
 /// Static checks and execution, block by block; stops at the first error. True if the whole
 /// program ran without error.
 /// Programs with macro statements or calls go through the expansion pass (loaded whole);
 /// DPRNT output goes to printOut.
 bool executeProgram(Session& s, const CommonOptions& opt, const machine::Setup& setup,
-                    motion::Sink& sink, std::ostream& printOut, Frame frame = Frame::Machine);
+                    motion::Sink& sink, std::ostream& printOut, Frame frame = Frame::Machine,
+                    motion::Sink* machineSink = nullptr);
 
 /// The work origin (machine frame) a program starts with under this setup: the initial work
 /// offset plus the common shift.
@@ -92,6 +97,7 @@ bool copyToStdout(const std::string& path);
 class Tee : public motion::Sink {
 public:
   void add(motion::Sink& s) { sinks_.push_back(&s); }
+  bool empty() const { return sinks_.empty(); }
   void event(const motion::Event& e) override {
     for (motion::Sink* s : sinks_)
       s->event(e);

@@ -113,6 +113,13 @@ int main(int argc, char** argv) {
   run->add_option("--setup", runOpt.setup, "machine setup (JSON): offsets, tools, ...");
   run->add_option("--trace", runOpt.trace, "write the motion trace (JSON lines) to this file");
   run->add_flag("--stats", runOpt.stats, "print path length, time and bounds");
+  run->add_option(
+         "--frame", runOpt.frame,
+         "frame of the trace: machine (default), work (relative to the work origin in force "
+         "at each move) or program (the work frame taken back through rotation, scaling "
+         "and mirror, in the program's units); --stats always measures the machine's "
+         "path in mm")
+      ->check(CLI::IsMember({"machine", "work", "program"}));
   addCommon(run);
   addExecution(run);
 
@@ -127,9 +134,11 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"xy", "xz", "yz", "iso"}));
   plot->add_option("--frame", plotOpt.frame,
                    "work (default): coordinates relative to the work origin in force at each "
-                   "move (work offset, G92/G52 shifts, tool length and turning offsets); machine: "
-                   "the machine frame, with the program's starting work zero marked")
-      ->check(CLI::IsMember({"work", "machine"}));
+                   "move (work offset, G92/G52 shifts, tool length and turning offsets); program: "
+                   "the work frame taken back through rotation, scaling and mirror, in the "
+                   "program's units; machine: the machine frame, with the program's starting "
+                   "work zero marked")
+      ->check(CLI::IsMember({"work", "program", "machine"}));
   addCommon(plot);
   addExecution(plot);
 

@@ -13,22 +13,25 @@ int runRun(const std::string& file, const RunOptions& opt) {
   Session s(opt.common);
   machine::Setup setup;
   if (int rc = openWithSetup(s, file, opt.setup, setup)) return rc;
-  Tee tee;
   std::optional<AtomicOutput> traceFile;
   std::optional<motion::TraceWriter> trace;
   if (!opt.trace.empty()) {
     traceFile.emplace(opt.trace);
     if (!traceFile->ok()) return UsageError;
     trace.emplace(traceFile->stream(), [&](FileId id) { return s.sources().name(id); });
-    tee.add(*trace);
   }
   motion::StatsOptions sopt;
   sopt.rapidRate = setup.rapidRate;
   motion::StatsCollector stats(sopt);
-  tee.add(stats);
   PrintOutput print(opt.common, false);
   if (!print.ok()) return UsageError;
-  const bool ok = executeProgram(s, opt.common, setup, tee, print.stream());
+  // the trace in the frame asked for; the statistics always measure the machine's path in mm
+  struct Discard : motion::Sink {
+    void event(const motion::Event&) override {}
+  } noTrace;
+  const bool ok =
+      executeProgram(s, opt.common, setup, trace ? static_cast<motion::Sink&>(*trace) : noTrace,
+                     print.stream(), frameNamed(opt.frame), &stats);
   s.flushDiagnostics();
   if (!ok) return ProgramErrors;
   if (!print.finish() || (traceFile && !traceFile->commit())) return UsageError;

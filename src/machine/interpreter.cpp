@@ -10,6 +10,7 @@
 #include "machine/settings.h"
 #include "motion/geometry.h"
 #include "motion/interpolator.h"
+#include "motion/plane_similarity.h"
 
 namespace gcx::machine {
 
@@ -1174,20 +1175,13 @@ bool Interpreter::arcTo(const Vec3& end, const Vec3& centre, bool cw, int turns,
   const double r1 =
       std::hypot(end[ax.first] - centre[ax.first], end[ax.second] - centre[ax.second]);
   // the transformed arc must stay a circle in its plane
-  const Eigen::Matrix3d m = transforms_.matrix().linear();
-  Eigen::Matrix2d a2;
-  a2 << m(ax.first, ax.first), m(ax.first, ax.second), m(ax.second, ax.first),
-      m(ax.second, ax.second);
-  const Eigen::Matrix2d g = a2.transpose() * a2;
-  const bool mixes =
-      std::fabs(m(ax.normal, ax.first)) > 1e-12 || std::fabs(m(ax.normal, ax.second)) > 1e-12 ||
-      std::fabs(m(ax.first, ax.normal)) > 1e-12 || std::fabs(m(ax.second, ax.normal)) > 1e-12;
-  if (mixes || std::fabs(g(0, 0) - g(1, 1)) > 1e-9 * g(0, 0) || std::fabs(g(0, 1)) > 1e-9 * g(0, 0))
+  const auto similarity = motion::planeSimilarity(transforms_.matrix().linear(), state_.plane);
+  if (!similarity)
     return fail(diag::code::UnequalArcScaling, at,
                 "this arc is not a circle after scaling with unequal factors or a rotation out of "
                 "its plane; gcx does not expand it yet (nct.md Q19)");
-  const double k = std::sqrt(std::fabs(a2.determinant()));
-  const bool mirrored = a2.determinant() < 0;
+  const double k = similarity->scale;
+  const bool mirrored = similarity->mirrored;
 
   motion::Event e;
   e.kind = Kind::Arc;
