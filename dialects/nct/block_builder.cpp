@@ -1,9 +1,9 @@
 #include "dialects/nct/block_builder.h"
 
-#include <charconv>
 #include <fmt/format.h>
 
 #include "diag/codes.h"
+#include "front/decimal_text.h"
 
 namespace gcx::nct {
 
@@ -65,18 +65,7 @@ double BlockBuilder::number(std::string_view digits, std::size_t pos) {
                              kMaxSignificantDigits));
     ok_ = false;
   }
-  double v = 0;
-  const char* b = digits.data();
-  const char* e = b + digits.size();
-  std::string tmp;
-  if (!digits.empty() && digits.front() == '.') { // from_chars wants a leading digit
-    tmp = "0";
-    tmp.append(digits);
-    b = tmp.data();
-    e = b + tmp.size();
-  }
-  std::from_chars(b, e, v);
-  return v;
+  return front::decimalValue(digits);
 }
 
 void BlockBuilder::skip(std::size_t pos, std::size_t len, std::string_view digits) {
