@@ -1,5 +1,6 @@
 #include "front/block_reader.h"
 
+#include <algorithm>
 #include <fmt/format.h>
 
 #include "diag/codes.h"
@@ -129,10 +130,20 @@ bool BlockReader::next(RawBlock& out) {
     const char* data = buf_.data();
     const std::size_t size = buf_.size();
     while (pos_ < size) {
+      // the bulk of a program: a run of bytes without meaning to the reader, copied at once
+      std::size_t run = pos_;
+      while (run < size && classes_[static_cast<unsigned char>(data[run])] == Plain)
+        ++run;
+      if (run > pos_) {
+        append(data + pos_, run - pos_);
+        offset_ += run - pos_;
+        pos_ = run;
+        if (pos_ == size) break;
+      }
       const char c = data[pos_++];
       const ByteClass k = classes_[static_cast<unsigned char>(c)];
       ++offset_;
-      if (k != Plain) {
+      {
         const SourceLoc here{file_, line_, static_cast<std::uint32_t>(offset_ - lineStart_),
                              offset_ - 1 + offsetShift_};
         if (k == Nul) {
@@ -162,12 +173,15 @@ bool BlockReader::next(RawBlock& out) {
           inLineComment_ = true;
         }
       }
-      if (cur_.size() < limits_.maxBlockBytes)
-        cur_.push_back(c);
-      else
-        overflow_ = true;
+      append(&c, 1);
     }
   }
+}
+
+void BlockReader::append(const char* bytes, std::size_t n) {
+  const std::size_t room = limits_.maxBlockBytes - std::min(cur_.size(), limits_.maxBlockBytes);
+  cur_.append(bytes, std::min(n, room));
+  if (n > room) overflow_ = true;
 }
 
 bool BlockReader::finishBlock(RawBlock& out) {

@@ -49,6 +49,8 @@ private:
   bool fill();
   void newLine();
   bool finishBlock(RawBlock& out);
+  /// Appends to the block being read, up to the block length limit (then marks the overflow).
+  void append(const char* bytes, std::size_t n);
   bool checkDialectLength(RawBlock& b);
   void normalize(RawBlock& b);
   void normalizeNonAscii(RawBlock& b, std::size_t& i, bool comment);
