@@ -6,20 +6,30 @@ namespace gcx::nct {
 
 namespace {
 
+// No member initializers: a block's buffer of pieces is left uninitialised; newPiece sets all.
 struct Piece {
   enum Kind : unsigned char { Skip, Sequence, Word, Comment } kind;
-  char letter = 0;
-  bool incremental = false;
-  char sign = 0;         // '-', '+' or none
-  std::uint32_t pos = 0; // first byte of the piece
-  std::uint32_t len = 0;
-  std::uint32_t digitsPos = 0;
-  std::uint32_t digitsLen = 0;
+  char letter;
+  bool incremental;
+  char sign;         // '-', '+' or none
+  std::uint32_t pos; // first byte of the piece
+  std::uint32_t len;
+  std::uint32_t digitsPos;
+  std::uint32_t digitsLen;
 };
 
-Piece commentPiece(std::size_t pos, std::size_t len) {
-  Piece p{Piece::Comment};
+Piece newPiece(Piece::Kind kind, std::size_t pos) {
+  Piece p;
+  p.kind = kind;
+  p.letter = p.sign = 0;
+  p.incremental = false;
   p.pos = static_cast<std::uint32_t>(pos);
+  p.len = p.digitsPos = p.digitsLen = 0;
+  return p;
+}
+
+Piece commentPiece(std::size_t pos, std::size_t len) {
+  Piece p = newPiece(Piece::Comment, pos);
   p.len = static_cast<std::uint32_t>(len);
   return p;
 }
@@ -76,8 +86,7 @@ FastResult parseFast(const front::RawBlock& raw, ir::Block& out, diag::Engine& d
     skipBlanks();
   }
   if (i < n && s[i] == '/') {
-    Piece p{Piece::Skip};
-    p.pos = static_cast<std::uint32_t>(i);
+    Piece p = newPiece(Piece::Skip, i);
     ++i;
     skipBlanks();
     std::size_t d = i;
@@ -100,9 +109,8 @@ FastResult parseFast(const front::RawBlock& raw, ir::Block& out, diag::Engine& d
       continue;
     }
     if (!isLetter(c)) return FastResult::Declined;
-    Piece p{Piece::Word};
+    Piece p = newPiece(Piece::Word, i);
     p.letter = c;
-    p.pos = static_cast<std::uint32_t>(i);
     ++i;
     skipBlanks();
     if (i < n && s[i] == 'I') {

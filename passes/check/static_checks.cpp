@@ -78,7 +78,8 @@ void StaticChecker::words(const ir::Block& b) {
 
   std::array<int, 64> groupSeen{}; // modal groups used in this block
   int gCount = 0, mCount = 0, exclusiveM = 0;
-  std::vector<std::pair<std::string_view, int>> counts;
+  auto& counts = wordCounts_; // a member: its capacity serves every block
+  counts.clear();
   auto countOf = [&](std::string_view a) -> int& {
     for (auto& [addr, n] : counts)
       if (addr == a) return n;

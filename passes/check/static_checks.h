@@ -43,6 +43,7 @@ private:
   std::size_t blocks_ = 0;
   std::optional<SourceRange> percentAfterStart_;
   std::vector<OpenLoop> loops_;
+  std::vector<std::pair<std::string_view, int>> wordCounts_; // words(): per address, this block
   std::vector<Jump> jumps_;
   std::unordered_set<std::int64_t> labels_;
 };
