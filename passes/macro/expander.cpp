@@ -127,23 +127,27 @@ bool mayNeedExpansion(const std::string& path, const Profile& profile) {
   for (unsigned c = 0; c < 256; ++c)
     fold[c] = static_cast<unsigned char>(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
   // per folded byte: 1 ends the scan ('#', '[': an expression only the expansion pass
-  // evaluates), 2 may start a marker
+  // evaluates), 2 may start a marker; the markers by their folded first byte, so a byte is
+  // compared only with the markers it can start
   std::array<unsigned char, 256> interest{};
   interest['#'] = interest['['] = 1;
+  std::array<std::vector<const std::string*>, 256> byFirst;
   std::size_t longest = 1;
   for (const std::string& m : markers)
     if (!m.empty()) {
-      interest[fold[static_cast<unsigned char>(m[0])]] |= 2;
+      const unsigned char first = fold[static_cast<unsigned char>(m[0])];
+      interest[first] |= 2;
+      byFirst[first].push_back(&m);
       longest = std::max(longest, m.size());
     }
   auto markerAt = [&](const std::string& text, std::size_t i) {
-    for (const std::string& m : markers) {
-      if (m.empty() || i + m.size() > text.size()) continue;
-      std::size_t k = 0;
-      while (k < m.size() && fold[static_cast<unsigned char>(text[i + k])] ==
-                                 fold[static_cast<unsigned char>(m[k])])
+    for (const std::string* m : byFirst[fold[static_cast<unsigned char>(text[i])]]) {
+      if (i + m->size() > text.size()) continue;
+      std::size_t k = 1;
+      while (k < m->size() && fold[static_cast<unsigned char>(text[i + k])] ==
+                                  fold[static_cast<unsigned char>((*m)[k])])
         ++k;
-      if (k == m.size()) return true;
+      if (k == m->size()) return true;
     }
     return false;
   };

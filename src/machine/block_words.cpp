@@ -11,6 +11,8 @@ bool BlockWords::hasAxisWord() const {
 }
 
 const ir::Word* BlockWords::findAction(GAction a) const {
+  const auto bit = static_cast<unsigned>(a);
+  if (!((actionBits[bit / 64] >> (bit % 64)) & 1u)) return nullptr;
   for (std::size_t i = 0; i < gCodes.size(); ++i)
     if (gCodes[i] && gCodes[i]->action == a) return gWords[i];
   return nullptr;
@@ -38,6 +40,10 @@ const ir::Word* sortWords(const ir::Block& b, const Profile& profile, BlockWords
     case 'G':
       out.gWords.push_back(&w);
       out.gCodes.push_back(profile.gcode(w.number));
+      if (const GCodeSpec* g = out.gCodes.back()) {
+        const auto bit = static_cast<unsigned>(g->action);
+        out.actionBits[bit / 64] |= std::uint64_t{1} << (bit % 64);
+      }
       break;
     case 'X':
       out.axis[0] = &w;

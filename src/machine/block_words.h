@@ -2,6 +2,7 @@
 // interpreter reads. Only literal words reach it (the macro pass evaluates expressions).
 #pragma once
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "dialect/profile.h"
@@ -23,6 +24,9 @@ struct BlockWords {
   const ir::Word *chamfer = nullptr, *rounding = nullptr, *angle = nullptr;
   std::vector<const ir::Word*> other;        // multi-letter words (AX), <file>, O, N words
   std::array<const ir::Word*, 26> letters{}; // every single-letter word by its letter
+  /// The actions of gCodes as bits, so that asking for an action the block lacks (the usual
+  /// answer, asked many times a block) does not walk the codes.
+  std::array<std::uint64_t, 4> actionBits{};
 
   /// The word of a letter as written (null if none): for rules the profile gives by letter.
   const ir::Word* letter(char c) const { return c >= 'A' && c <= 'Z' ? letters[c - 'A'] : nullptr; }
