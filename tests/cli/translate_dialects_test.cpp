@@ -107,6 +107,37 @@ TEST_F(TranslateDialects, CoolantFms3000HasNoCodeForIsALocatedError) {
                    "machine-specific) [GCX080]\n  M8\n  ^\n");
 }
 
+// The pitch is the travel per turn: half a turn down 5 mm is a pitch of 10 mm.
+TEST_F(TranslateDialects, APartialTurnHelixToFms3000HasItsPitchPerFullTurn) {
+  write("P.nct", "G90 G0 X10 Y0 Z0\nG3 X-10 Y0 Z-5 I-10 J0 F100\nM30\n");
+  const CliResult r = gcx("translate P.nct --to fms3000 -o P.fms");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  const std::string text = read("P.fms");
+  EXPECT_EQ(text.substr(text.find("G90")),
+            "G90 G94 G17\r\nG00 X10 Y0 Z0\r\nG03 X-10 Y0 Z-5 I-10 J0 "
+            "G10 K-10 F100\r\nM30\r\n");
+}
+
+// Spindle, coolant and tool change by meaning; a dwell under G95 stays in revolutions.
+TEST_F(TranslateDialects, NctMachineCodesAndARevolutionDwellToWl4) {
+  write("M.nct", "T3 M6\nS1200 M4\nM7\nG95 G1 X2 F0.1\nG4 P3\nM9\nM5\nM30\n");
+  const CliResult r = gcx("translate M.nct --to wl4 -o M.wl4");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  const std::string text = read("M.wl4");
+  EXPECT_EQ(text.substr(text.find("G90")),
+            "G90 G94 G17\nT3 M6\nS1200 M4\nM7\nG95\nG1 X2 Y0 Z0 F0.1\n"
+            "G4 E3\nM9\nS1200 M5\nM30\n%\n");
+}
+
+TEST_F(TranslateDialects, ASpeedAboveFms3000sRangeIsALocatedError) {
+  write("S.wl4", "%S\nS12000 M3\nG0 X1\nM30\n%\n");
+  const CliResult r = gcx("translate S.wl4 --to fms3000 -o S.fms");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_FALSE(fs::exists(dir_ / "S.fms"));
+  EXPECT_EQ(r.err, "S.wl4:2:1: error: FMS-3000 S12000 for the spindle speed is outside S's range 0 "
+                   "to 9999 [GCX081]\n  S12000 M3\n  ^\n");
+}
+
 // A batch across dialects: every program of the tree to WL4, each proven.
 TEST_F(TranslateDialects, ABatchTranslatesEveryDialectToWl4) {
   write("in/A.nct", "G90 G0 X10 Y5\nG4 P0.5\nG1 X20 F100\nM30\n");
