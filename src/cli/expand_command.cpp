@@ -130,9 +130,9 @@ int runExpand(const std::string& file, const ExpandOptions& opt) {
   // The same code means other things in another dialect (FMS-3000 G04 E is tenths of a second,
   // NCT G4 P seconds): writing one dialect's blocks as another's is a translation, never a copy.
   if (target && target->name != s.dialect().name) {
-    reportUsage(fmt::format("--to {} from a {} program is a translation between dialects, which "
-                            "is not implemented yet (--to canonical writes its motion)",
-                            target->name, s.dialect().name));
+    reportUsage(fmt::format("--to {} from a {} program is a translation between dialects: gcx "
+                            "translate --to {} writes its motion with the codes' meaning",
+                            target->name, s.dialect().name, target->name));
     return UsageError;
   }
   if (target) return expandToDialect(s, *target, opt, setup);

@@ -65,8 +65,9 @@ std::vector<Job> collect(const fs::path& root, const fs::path& outRoot, const Tr
     const auto target = translateTarget(*d, opt.to, why);
     Job j;
     j.input = f;
-    j.relative = fs::relative(f, root).string();
-    fs::path out = outRoot / fs::relative(f, root);
+    // by the path under root, not where a symlink points: the output stays under OUTDIR
+    j.relative = f.lexically_relative(root).string();
+    fs::path out = outRoot / j.relative;
     out.replace_extension(target ? target->extension : ".out");
     j.output = out;
     // a program's own setup beside it wins over --setup

@@ -11,6 +11,7 @@
 #include "cli/commands.h"
 #include "cli/equiv_program.h"
 #include "cli/translate_batch.h"
+#include "cli/translate_flat.h"
 #include "cli/translate_target.h"
 #include "diag/diagnostic.h"
 #include "dialect/dialect.h"
@@ -44,7 +45,8 @@ bool verified(const std::string& source, const fs::path& result, const Translate
   equiv::ProgramInput a{source, opt.setup, equiv::ProgramInput::Reader::Auto};
   // canonical motion has the offsets of the setup written into it; a dialect's program reads
   // them from the same setup as its source
-  equiv::ProgramInput b{result.string(), target.dialect ? opt.setup : std::string(),
+  equiv::ProgramInput b{result.string(),
+                        target.dialect && !target.motionWriter ? opt.setup : std::string(),
                         equiv::ProgramInput::Reader::Auto};
   equiv::EquivOptions o;
   o.gcxProgram = gcxProgramMaker(opt.common);
@@ -94,7 +96,9 @@ int runTranslate(const std::string& input, const TranslateOptions& opt) {
       fs::remove(path, ec);
     }
   } discard{staged};
-  if (const int rc = runExpand(input, expand)) return rc;
+  if (const int rc = target->motionWriter ? writeFlatMotion(input, *target, opt, staged.string())
+                                          : runExpand(input, expand))
+    return rc;
   if (opt.verify && !verified(input, staged, *target, opt)) return ProgramErrors;
   if (opt.output.empty()) {
     if (!copyToStdout(staged)) return UsageError;

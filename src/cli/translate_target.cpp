@@ -21,6 +21,25 @@ std::string flattened(const emit::Capabilities& target) {
   return out;
 }
 
+// Another dialect: the executed motion in its syntax, each code chosen by its meaning
+// (translate/flat_writer.h), every construct run out.
+std::optional<TranslateTarget> otherDialect(const Dialect& target, TranslateTarget& t,
+                                            std::string& why) {
+  t.motionWriter = emit::motionWriterFor(target.name);
+  if (!t.motionWriter) {
+    why = fmt::format("translating to {} from another dialect is not implemented yet", target.name);
+    return std::nullopt;
+  }
+  t.dialect = &target;
+  t.expandTo = "canonical";
+  t.extension = target.extensions.empty() ? "" : target.extensions.front();
+  t.note = fmt::format("{} expanded into the motion they run: the codes of another dialect mean "
+                       "other things here; machine frame, offsets and tool lengths in the "
+                       "coordinates, run without a setup",
+                       flattened(emit::Capabilities{}));
+  return t;
+}
+
 } // namespace
 
 std::string translateTargetNames() {
@@ -49,15 +68,7 @@ std::optional<TranslateTarget> translateTarget(const Dialect& source, const std:
     why = fmt::format("--to {}: the targets are {}", to, translateTargetNames());
     return std::nullopt;
   }
-  if (target->name != source.name) {
-    // the same code means other things in another dialect (FMS-3000 G04 E is tenths of a second,
-    // NCT G4 P seconds): a copy would look right and move wrong
-    why = fmt::format("translating {} to {} is not implemented yet: the {} emitter does not map "
-                      "{}'s codes to their meaning (--to canonical or --to ngc writes the motion, "
-                      "proven equivalent)",
-                      source.name, target->name, target->name, source.name);
-    return std::nullopt;
-  }
+  if (target->name != source.name) return otherDialect(*target, t, why);
   t.dialect = target;
   t.expandTo = target->name;
   t.extension = target->extensions.empty() ? "" : target->extensions.front();

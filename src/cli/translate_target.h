@@ -5,6 +5,7 @@
 #include <string>
 
 #include "dialect/dialect.h"
+#include "emit/motion_writer.h"
 
 namespace gcx::cli {
 
@@ -14,6 +15,9 @@ struct TranslateTarget {
   const Dialect* dialect = nullptr; // null: RS274/NGC that LinuxCNC runs
   std::string extension;            // of the output file: ".ngc", ".nct"
   std::string note;                 // the structures the output does not keep, and why
+  /// Set for another dialect than the source's: the writer of the executed motion, whose
+  /// result has the setup in its coordinates and runs without one.
+  emit::MotionWriterMaker motionWriter = nullptr;
 };
 
 /// The target, or nullopt with the reason in why (an unknown target, or a pair of dialects gcx

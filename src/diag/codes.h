@@ -167,4 +167,8 @@ inline constexpr const char* FmsCycleParameters = "FMSX02"; // cycle words wrong
 inline constexpr const char* FmsCallAndEnd = "FMSX03";      // P with M02/M30/M98 (§1.4, §10 Q21)
 inline constexpr const char* FmsPolarRule = "FMSX04"; // G36 polar rules (§3.11, 001:3856-3859)
 
+// --- gcx translate between dialects (docs/translation.md)
+inline constexpr const char* TranslateNoCode = "GCX080"; // the target has no code for this meaning
+inline constexpr const char* TranslateValue = "GCX081";  // a value outside the target's format
+
 } // namespace gcx::diag::code

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "emit/spiral_lines.h"
 #include "motion/decimal.h"
 #include "motion/geometry.h"
 #include "motion/interpolator.h"
@@ -109,18 +110,9 @@ void CanonicalEmitter::event(const motion::Event& e) {
   case Kind::Arc: {
     feedMode(e);
     const motion::ArcGeometry arc(e);
-    if (arc.isSpiral() && std::fabs(arc.startRadius() - arc.endRadius()) > 1e-9) {
-      std::vector<motion::Vec3> pts;
-      motion::appendArcPoints(arc, opt_.chordTolerance, pts);
-      // Point i is at t = (i+1)/n; the extra axes move linearly in t like the height.
-      const double n = static_cast<double>(pts.size());
-      for (std::size_t i = 0; i < pts.size(); ++i) {
-        const motion::Extra x =
-            i + 1 == pts.size()
-                ? e.extraEnd
-                : motion::Extra(e.extraStart + (e.extraEnd - e.extraStart) * ((i + 1) / n));
-        straight(e, "G1", pts[i], x, true);
-      }
+    if (isSpiral(arc)) {
+      for (const LinePoint& p : spiralLines(e, arc, opt_.chordTolerance))
+        straight(e, "G1", p.at, p.extra, true);
       return;
     }
     if (e.plane != plane_) {

@@ -66,23 +66,24 @@ TEST_F(DialectCli, ExpandTargetsComeFromTheRegistry) {
 }
 
 // Writing one dialect's blocks as another's would copy codes whose meaning differs (NCT G4 P is
-// seconds, FMS-3000 G04 P is not a dwell): that is translation, refused until it exists.
+// seconds, FMS-3000 G04 P is not a dwell): that is translation, which translate does.
 TEST_F(DialectCli, ExpandToAnotherDialectIsRefused) {
   write("O0001.nct", "G4 P1.5\nG81 X1 Y1 Z-1 R1 F100\nG80\nM30\n");
   Result r = gcx("expand O0001.nct --to fms3000 -o out.fms");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_EQ(r.err, "gcx: error: --to fms3000 from a nct program is a translation between "
-                   "dialects, which is not implemented yet (--to canonical writes its motion)\n");
+                   "dialects: gcx translate --to fms3000 writes its motion with the codes' "
+                   "meaning\n");
   EXPECT_FALSE(fs::exists(folder_.path() / "out.fms"));
   r = gcx("expand O0001.nct --to wl4");
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_EQ(r.err, "gcx: error: --to wl4 from a nct program is a translation between dialects, "
-                   "which is not implemented yet (--to canonical writes its motion)\n");
+  EXPECT_EQ(r.err, "gcx: error: --to wl4 from a nct program is a translation between dialects: "
+                   "gcx translate --to wl4 writes its motion with the codes' meaning\n");
   write("P1.wl4", "%P1\nG4 E1.5\nM30\n%\n");
   r = gcx("expand P1.wl4 --to nct");
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_EQ(r.err, "gcx: error: --to nct from a wl4 program is a translation between dialects, "
-                   "which is not implemented yet (--to canonical writes its motion)\n");
+  EXPECT_EQ(r.err, "gcx: error: --to nct from a wl4 program is a translation between dialects: "
+                   "gcx translate --to nct writes its motion with the codes' meaning\n");
 }
 
 } // namespace

@@ -71,14 +71,8 @@ TEST_F(TranslateCli, ATranslationThatDoesNotHoldIsNotWritten) {
   EXPECT_NE(r.err.find("A.nct:2"), std::string::npos) << r.err; // the source line of the move
 }
 
-TEST_F(TranslateCli, AnotherDialectIsRefusedUntilItsEmitterMapsMeaning) {
+TEST_F(TranslateCli, AnUnknownTargetIsRefused) {
   write("A.nct", kProgram);
-  const Result r = gcx("translate A.nct --to fms3000 -o A.fms");
-  EXPECT_EQ(r.exitCode, 2);
-  EXPECT_FALSE(fs::exists(dir_ / "A.fms"));
-  EXPECT_EQ(r.err, "gcx: error: translating nct to fms3000 is not implemented yet: the fms3000 "
-                   "emitter does not map nct's codes to their meaning (--to canonical or --to ngc "
-                   "writes the motion, proven equivalent)\n");
   EXPECT_EQ(gcx("translate A.nct --to dxf").err,
             "gcx: error: --to dxf: the targets are canonical, ngc, nct, fms3000, wl4\n");
 }

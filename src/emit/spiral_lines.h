@@ -1,0 +1,25 @@
+// Spirals (an arc whose end radius differs from its start radius), which neither RS274/NGC nor
+// the dialects can write as one block, as the lines every writer of flat motion puts in their
+// place.
+#pragma once
+#include <vector>
+
+#include "motion/event.h"
+#include "motion/geometry.h"
+
+namespace gcx::emit {
+
+/// True when the arc must be written as lines.
+bool isSpiral(const motion::ArcGeometry& arc);
+
+struct LinePoint {
+  motion::Vec3 at;
+  motion::Extra extra;
+};
+
+/// The end points of lines within `chord` mm of the spiral; the extra axes move linearly along
+/// it like the height, and the last point is the event's end.
+std::vector<LinePoint> spiralLines(const motion::Event& e, const motion::ArcGeometry& arc,
+                                   double chord);
+
+} // namespace gcx::emit
