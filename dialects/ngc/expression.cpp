@@ -139,10 +139,11 @@ struct Printer {
       return bracketed(e.args[1], out);
     case ir::Func::Fix:   // toward zero: LinuxCNC's FIX floors, FUP ceils
     case ir::Func::Fup: { // away from zero
-      std::string x;
-      if (!bracketed(a, x)) return false;
+      std::string v;
+      if (!print(a, v)) return false;
+      const std::string x = "[" + v + "]";
       const bool toZero = e.func == ir::Func::Fix;
-      out += "[[FIX" + x + "*[" + x + (toZero ? " GE 0]" : " LT 0]") + "]+[FUP" + x + "*[" + x +
+      out += "[[FIX" + x + "*[" + v + (toZero ? " GE 0]" : " LT 0]") + "]+[FUP" + x + "*[" + v +
              (toZero ? " LT 0]" : " GE 0]") + "]]";
       return true;
     }

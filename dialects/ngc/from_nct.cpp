@@ -128,12 +128,15 @@ private:
   bool words(const ir::Block& b, Frame frame, std::string& out);
   bool cycleWords(const ir::Block& b, double cycle, Frame frame, std::string& line);
   bool callM98(const ir::Block& b, std::string& out);
+  bool workOffset(const ir::Block& b, Frame frame, std::string& out);
   bool callG65(const ir::Block& b, Frame frame, std::string& out);
   bool defineSub(const ir::Word& p, Frame frame, int& number);
   bool value(const ir::Word& w, Frame frame, std::string& out) {
     std::string why;
-    return wordValueText(w, variables(frame), out, why) ||
-           fail(w.range, w.address + " word value", why);
+    if (!wordValueText(w, variables(frame), out, why))
+      return fail(w.range, w.address + " word value", why);
+    if (w.kind == ir::ValueKind::Expression) kept_.insert("variables and expressions");
+    return true;
   }
 
   const FindProgram& find_;
@@ -278,6 +281,8 @@ bool Writer::words(const ir::Block& b, Frame frame, std::string& out) {
   for (const ir::Word& w : b.words)
     if (w.isLiteral() && ((w.is('M') && w.number == 98) || (w.is('G') && w.number == 65)))
       return w.is('M') ? callM98(b, out) : callG65(b, frame, out);
+  if (const ir::Word* g = b.find('G'); g && g->isLiteral() && g->number == 10)
+    return workOffset(b, frame, out);
   std::vector<const ir::Word*> gs, ms;
   double cycle = 0;
   bool motion = false, cancel = false;
@@ -387,6 +392,28 @@ bool Writer::cycleWords(const ir::Block& b, double cycle, Frame frame, std::stri
     return fail(b.range, "G89 with G98",
                 "LinuxCNC's G89 feeds all the way out to the initial level");
   kept_.insert(fmt::format("canned cycle G{}", cycle_));
+  return true;
+}
+
+// G10 L2 P1-P6 X Y Z: the work offset G54-G59 set absolutely, LinuxCNC's G10 L2 (P0, NCT's
+// common offset, has no LinuxCNC counterpart).
+bool Writer::workOffset(const ir::Block& b, Frame frame, std::string& out) {
+  const ir::Word* l = b.find('L');
+  const ir::Word* p = b.find('P');
+  if (!l || !l->isLiteral() || l->number != 2 || !p || !p->isLiteral() || p->number < 1 ||
+      p->number > 6 || distance_ != Distance::Absolute)
+    return fail(b.range, "G10", "only G10 L2 P1-P6 under G90 sets a work offset as LinuxCNC's");
+  std::string line = "G10 L2 P" + emit::formatNumber(p->number);
+  for (const ir::Word& w : b.words) {
+    if (&w == l || &w == p || w.is('G')) continue;
+    if (!isAxis(w) || w.incremental)
+      return fail(w.range, w.address + " word of G10", "LinuxCNC's G10 L2 has no such word");
+    std::string v;
+    if (!value(w, frame, v)) return false;
+    line += " " + w.address + v;
+  }
+  out += line + '\n';
+  kept_.insert("work offsets by G10 L2");
   return true;
 }
 

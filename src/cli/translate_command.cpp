@@ -100,7 +100,7 @@ int runTranslate(const std::string& input, const TranslateOptions& opt) {
   bool kept = false;
   if (target->name == "ngc") {
     // LinuxCNC's own structure where it means the same, proven like the flat motion
-    const NgcStructure ngc = writeStructuredNgc(*source, input, staged.string(), opt.common);
+    const NgcStructure ngc = writeStructuredNgc(*source, input, staged.string(), opt);
     std::ostringstream proof;
     kept = ngc.written && (!opt.verify || verified(input, staged, true, opt, proof));
     note = ngcNote(ngc, kept, target->note, proof.str());

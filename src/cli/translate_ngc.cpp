@@ -5,12 +5,41 @@
 #include <sstream>
 
 #include "dialects/ngc/structured.h"
+#include "emit/number.h"
+#include "oracle/setup.h"
 #include "passes/macro/program_library.h"
 
 namespace gcx::cli {
 
+namespace {
+
+// "G10 L2 P1 X.. Y.. Z..\n" for each work offset of the setup; false with why when the setup is
+// not one rs274 takes.
+bool setupOffsets(const std::string& setupPath, std::string& out, std::string& why) {
+  std::ifstream in(setupPath, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  oracle::OracleSetup setup;
+  if (!in || !oracle::parseSetupJson(text.str(), setup, why)) {
+    why = setupPath + ": " + (why.empty() ? "cannot be read" : why);
+    return false;
+  }
+  for (const oracle::OracleWorkOffset& w : setup.workOffsets) {
+    if (w.rotationDeg != 0) {
+      why = setupPath + ": a rotated work offset has no G10 L2 X Y Z form";
+      return false;
+    }
+    out += fmt::format("G10 L2 P{} X{} Y{} Z{}\n", w.index, emit::formatNumber(w.offsetMm.x()),
+                       emit::formatNumber(w.offsetMm.y()), emit::formatNumber(w.offsetMm.z()));
+  }
+  return true;
+}
+
+} // namespace
+
 NgcStructure writeStructuredNgc(const Dialect& source, const std::string& input,
-                                const std::string& file, const CommonOptions& common) {
+                                const std::string& file, const TranslateOptions& opt) {
+  const CommonOptions& common = opt.common;
   NgcStructure result;
   const ngc::StructuredWriter writer = ngc::structuredWriter(source);
   if (!writer) {
@@ -34,8 +63,14 @@ NgcStructure writeStructuredNgc(const Dialect& source, const std::string& input,
                                 at.line, unkept.what, unkept.why);
     return result;
   }
+  std::string offsets;
+  if (opt.writeOffsets && !opt.setup.empty() && !setupOffsets(opt.setup, offsets, result.unkept))
+    return result;
+  if (!offsets.empty()) structured.kept.push_back("the setup's work offsets as G10 L2");
+  // after the heading line
+  const std::size_t body = structured.text.find('\n') + 1;
   std::ofstream out(file, std::ios::binary);
-  out << structured.text;
+  out << structured.text.substr(0, body) << offsets << structured.text.substr(body);
   result.written = static_cast<bool>(out);
   result.kept = std::move(structured.kept);
   return result;

@@ -16,10 +16,10 @@ struct NgcStructure {
 };
 
 /// Writes `input` as structured ngc to `file` when its dialect has a structured writer and every
-/// construct keeps its meaning. A program that does not load is left to the flat expansion,
-/// which reports its errors.
+/// construct keeps its meaning; with --write-offsets the setup's work offsets come first, as
+/// G10 L2. A program that does not load is left to the flat expansion, which reports its errors.
 NgcStructure writeStructuredNgc(const Dialect& source, const std::string& input,
-                                const std::string& file, const CommonOptions& common);
+                                const std::string& file, const TranslateOptions& opt);
 
 /// What the note says: the structures kept, or, after `flat` (the target's note for plain
 /// motion), why they were not: a construct the writer could not keep, or the proof (`proof`:

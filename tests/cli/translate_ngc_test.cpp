@@ -13,6 +13,15 @@ namespace {
 
 using Result = CliResult;
 
+std::string firstLine(const std::string& text) {
+  return text.substr(0, text.find('\n') + 1);
+}
+
+constexpr const char* kHeader =
+    "(written by gcx translate --to ngc: the structure LinuxCNC gives the same meaning is kept)\n";
+constexpr const char* kFlat = "(gcx canonical motion: machine frame, mm, absolute; offsets and "
+                              "tool lengths are in the coordinates)\n";
+
 class TranslateNgc : public testing::Test {
 protected:
   void SetUp() override {
@@ -28,6 +37,14 @@ protected:
     r = gcx("translate " + name + ".nct --to ngc -o " + name + ".ngc" + extra);
     return fs::exists(dir_ / (name + ".ngc")) ? readFile(dir_ / (name + ".ngc")) : "";
   }
+  // translates NAME.nct, which must come out as flat motion; the note on its first line
+  std::string flatNote(const std::string& name) {
+    Result r;
+    const std::string text = translate(name, r);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(text.find(kFlat), std::string::npos) << text;
+    return firstLine(text);
+  }
   std::string verifiedLine(const std::string& name) {
     return "gcx: " + name + ".nct -> " + name +
            ".ngc: verified, moves the tool like the source within 0.001 mm\n";
@@ -36,11 +53,6 @@ protected:
   CliFolder folder_{"translate-ngc"};
   const fs::path& dir_ = folder_.path();
 };
-
-constexpr const char* kHeader =
-    "(written by gcx translate --to ngc: the structure LinuxCNC gives the same meaning is kept)\n";
-constexpr const char* kFlat = "(gcx canonical motion: machine frame, mm, absolute; offsets and "
-                              "tool lengths are in the coordinates)\n";
 
 // WHILE DO1 ... END1, #-variables with expressions, and a G81 kept as G81 with R repeated.
 TEST_F(TranslateNgc, WhileLoopVariablesAndDrillingCycleAreKept) {
@@ -156,7 +168,7 @@ TEST_F(TranslateNgc, TappingCycleIsExpandedWithANote) {
   const std::string note = "written as plain G0-G3 motion: TAP.nct:4: G84 cycle: NCT's floating "
                            "tap reverses the spindle and returns to R; LinuxCNC's G84 dwells and "
                            "feeds out to the clear level, and G74 has no LinuxCNC form";
-  EXPECT_EQ(text.substr(0, text.find('\n') + 1), "(" + note + ")\n");
+  EXPECT_EQ(firstLine(text), "(" + note + ")\n");
   EXPECT_NE(text.find("S500 M4\nG1 X10 Y10 Z2 F500\n"), std::string::npos) << text;
   EXPECT_EQ(r.err, "gcx: note: TAP.nct: " + note + "\n" + verifiedLine("TAP"));
 }
@@ -165,13 +177,51 @@ TEST_F(TranslateNgc, TappingCycleIsExpandedWithANote) {
 TEST_F(TranslateNgc, SubprogramReadingItsCallersLocalsIsExpanded) {
   write("SHARE.nct", "G90 G0 X0 Y0\n#1=5\nM98 P3001\nM30\n");
   write("O3001.nct", "G1 X#1 F100\nM99\n");
-  Result r;
-  const std::string text = translate("SHARE", r);
-  EXPECT_EQ(text.substr(0, text.find('\n') + 1),
+  EXPECT_EQ(flatNote("SHARE"),
             "(written as plain G0-G3 motion: O3001.nct:1: X word value: an M98 subprogram shares "
             "its caller's local variables #1-#33; a LinuxCNC o-word call gives the subroutine its "
             "own)\n");
-  EXPECT_EQ(r.exitCode, 0) << r.err;
+}
+
+// A macro that reads an argument its call leaves vacant: LinuxCNC has no vacant value.
+TEST_F(TranslateNgc, MacroReadingAVacantArgumentIsExpanded) {
+  write("HOLE.nct", "G90 G0 X0 Y0 Z5\nG65 P9020 A10\nM30\n");
+  write("O9020.nct", "G0 X#1 Y#2\nM99\n");
+  EXPECT_EQ(flatNote("HOLE"),
+            "(written as plain G0-G3 motion: HOLE.nct:2: G65 without the argument #2: O9020 reads "
+            "it vacant; LinuxCNC has no vacant value)\n");
+}
+
+// The program's own G10 L2 P1-P6 under G90 is LinuxCNC's.
+TEST_F(TranslateNgc, WorkOffsetsSetByTheProgramAreKept) {
+  write("OFS.nct", "G90 G17 G21 G54\nG10 L2 P1 X100 Y50 Z-20\nG0 X10 Y10 Z5\n"
+                   "G10 L2 P2 X[#500+1] Y0 Z0\nG55 G0 X1\nM30\n");
+  Result r;
+  EXPECT_EQ(translate("OFS", r), std::string(kHeader) +
+                                     "G90 G17 G21 G54\nG10 L2 P1 X100 Y50 Z-20\nG0 X10 Y10 Z5\n"
+                                     "G10 L2 P2 X[#500+1] Y0 Z0\nG55 G0 X1\nM30\n");
+  EXPECT_EQ(r.err, "gcx: note: OFS.nct: kept as LinuxCNC's own: variables and expressions, work "
+                   "offsets by G10 L2\n" +
+                       verifiedLine("OFS"));
+}
+
+// --write-offsets: the setup's work offsets at the head of the program, so it runs on a machine
+// whose own offsets are not set; rs274 with a setup of tools only moves like the source.
+TEST_F(TranslateNgc, TheSetupsWorkOffsetsAreWrittenOnRequest) {
+  write("setup.json", R"({"work_offsets": {"G54": [-412.5, -230, -380.25], "G55": [1, 2, 3]},
+                          "tools": {"9": {"length": 80, "radius": 4.5}}})");
+  write("tools.json", R"({"tools": {"9": {"length": 80, "radius": 4.5}}})");
+  write("B.nct", "G90 G17 G21 G94 G54\nT9 M6\nG0 X10 Y10\nG43 Z30 H9\nG55 G0 X0 Y0\nM30\n");
+  Result r;
+  EXPECT_EQ(translate("B", r, " --setup setup.json --write-offsets"),
+            std::string(kHeader) +
+                "G10 L2 P1 X-412.5 Y-230 Z-380.25\nG10 L2 P2 X1 Y2 Z3\n"
+                "G90 G17 G21 G94 G54\nT9 M6\nG0 X10 Y10\nG43 Z30 H9\nG55 G0 X0 Y0\nM30\n");
+  EXPECT_EQ(r.err,
+            "gcx: note: B.nct: kept as LinuxCNC's own: the setup's work offsets as G10 L2\n" +
+                verifiedLine("B"));
+  const Result e = gcx("equiv B.nct B.ngc --setup setup.json --setup-b tools.json");
+  EXPECT_EQ(e.exitCode, 0) << e.out << e.err;
 }
 
 // A vacant variable makes NCT skip the word, LinuxCNC reads 0: the structured text is written,
@@ -195,14 +245,17 @@ TEST_F(TranslateNgc, Rs274OnTheStructuredFileMovesLikeTheSource) {
                           "tools": {"9": {"length": 80, "radius": 4.5}}})");
   write("BORE.nct", "G90 G17 G21 G94 G54\nT9 M6\nS900 M3\nG0 X10 Y10\nG43 Z30 H9\n#100=-8\n"
                     "G98 G82 X10 Y10 Z#100 R2 P0.5 F90 L1\nG91 G82 X15 Z-10 R-28 L3\nG90 G80\n"
-                    "G98 G83 X5 Y40 Z-20 R2 Q6 E0.254 F100\nX25\nG80\nM30\n");
+                    "G98 G83 X5 Y40 Z-20 R2 Q6 E0.254 F100\nX25\nG81 X40 Y40\nG80\nM30\n");
   Result r;
   const std::string text = translate("BORE", r, " --setup setup.json");
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(text.find("G98 G82 X10 Y10 P0.5 F90 L1 R2 Z#100\nG91 G82 X15 L3 R-28 Z-10\n"),
             std::string::npos)
       << text;
-  EXPECT_NE(text.find("G98 G83 X5 Y40 Q6 F100 R2 Z-20\nX25\n"), std::string::npos) << text;
+  // LinuxCNC asks R again when the cycle code changes
+  EXPECT_NE(text.find("G98 G83 X5 Y40 Q6 F100 R2 Z-20\nX25\nG81 X40 Y40 R2 Z-20\n"),
+            std::string::npos)
+      << text;
   // the proof again, by the equivalence command on the written file
   const Result e = gcx("equiv BORE.nct BORE.ngc --setup setup.json");
   EXPECT_EQ(e.exitCode, 0) << e.out << e.err;
