@@ -149,7 +149,8 @@ private:
   // the cycle state as the text runs, for what LinuxCNC asks again or means otherwise
   double cycle_ = 0;
   bool retractR_ = false; // G99
-  std::string lastR_, lastZ_;
+  std::string lastR_, lastZ_; // the R level and the bottom (on the drilling axis)
+  char drill_ = 'Z';          // the drilling axis of the plane (G17 Z, G18 Y, G19 X)
   bool backOff_ = false; // the last E was LinuxCNC's fixed 0.254 mm
   bool ended_ = false;   // M2 or M30 written
   Distance distance_ = Distance::Absolute;
@@ -289,6 +290,8 @@ bool Writer::words(const ir::Block& b, Frame frame, std::string& out) {
   for (const ir::Word& w : b.words) {
     if (w.is('G') && w.isLiteral() && (w.number == 90 || w.number == 91))
       distance_ = w.number == 90 ? Distance::Absolute : Distance::Incremental;
+    if (w.is('G') && w.isLiteral() && w.number >= 17 && w.number <= 19) // the drilling axis
+      drill_ = w.number == 17 ? 'Z' : w.number == 18 ? 'Y' : 'X';
   }
   for (const ir::Word& w : b.words) {
     if (w.incremental && (!isAxis(w) || distance_ == Distance::Unknown))
@@ -339,7 +342,7 @@ bool Writer::words(const ir::Block& b, Frame frame, std::string& out) {
   }
   for (const ir::Word& w : b.words) {
     if (w.is('G') || w.is('M')) continue;
-    if (inCycle && (w.is('E') || w.is('I') || w.is('R') || w.is('Z'))) continue;
+    if (inCycle && (w.is('E') || w.is('I') || w.is('R') || w.is(drill_))) continue;
     if (w.is('E') || (w.is('L') && !inCycle))
       return fail(w.range, w.address + " word", "it has no meaning outside a cycle or call");
     std::string v;
@@ -362,13 +365,13 @@ bool Writer::words(const ir::Block& b, Frame frame, std::string& out) {
   return true;
 }
 
-// The R and Z of a cycle block (LinuxCNC asks R again when the cycle code changes) and the
-// cycle-specific words that must mean the same.
+// The R level and the bottom of a cycle block (LinuxCNC asks R again when the cycle code changes)
+// and the cycle-specific words that must mean the same.
 bool Writer::cycleWords(const ir::Block& b, double cycle, Frame frame, std::string& line) {
   const auto literal = [](const ir::Word* w) -> std::string {
     return w->isLiteral() ? emit::formatNumber(w->number) : std::string();
   };
-  for (auto [letter, last] : {std::pair{'R', &lastR_}, std::pair{'Z', &lastZ_}}) {
+  for (auto [letter, last] : {std::pair{'R', &lastR_}, std::pair{drill_, &lastZ_}}) {
     if (const ir::Word* w = b.find(letter)) {
       std::string v;
       if (!value(*w, frame, v)) return false;

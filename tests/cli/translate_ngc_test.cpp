@@ -93,6 +93,19 @@ TEST_F(TranslateNgc, WhileLoopVariablesAndDrillingCycleAreKept) {
                        verifiedLine("LOOP"));
 }
 
+// In G19 the drilling axis is X: a cycle-code change repeats R and the X bottom, not Z.
+TEST_F(TranslateNgc, ACycleCodeChangeRepeatsTheBottomOnThePlanesDrillingAxis) {
+  write("G19.nct", "G90 G19 G21 G94\nG0 X10 Y0 Z0\nF120\nG98 G82 Y10 Z5 X-5 R2 P0.5\n"
+                   "G85 Y20 R3\nG80\nM30\n");
+  Result r;
+  EXPECT_EQ(translate("G19", r), std::string(kHeader) +
+                                     "G90 G19 G21 G94\nG0 X10 Y0 Z0\nF120\n"
+                                     "G98 G82 Y10 Z5 P0.5 R2 X-5\nG85 Y20 R3 X-5\nG80\nM30\n");
+  EXPECT_EQ(r.err, "gcx: note: G19.nct: kept as LinuxCNC's own: canned cycle G82, canned cycle "
+                   "G85\n" +
+                       verifiedLine("G19"));
+}
+
 // M98 P2001 L3 with the subprogram in its own file: an o2001 sub before the main program, called
 // by a repeat; the I operator reads LinuxCNC's current position.
 TEST_F(TranslateNgc, SubprogramWithRepeatsIsKeptAsAnOWordSub) {
