@@ -148,11 +148,12 @@ private:
   int labels_ = 0;
   // the cycle state as the text runs, for what LinuxCNC asks again or means otherwise
   double cycle_ = 0;
-  bool retractR_ = false; // G99
+  bool retractR_ = false;     // G99
   std::string lastR_, lastZ_; // the R level and the bottom (on the drilling axis)
   char drill_ = 'Z';          // the drilling axis of the plane (G17 Z, G18 Y, G19 X)
-  bool backOff_ = false; // the last E was LinuxCNC's fixed 0.254 mm
-  bool ended_ = false;   // M2 or M30 written
+  int motion_ = -1;           // G0-G3 as the text runs; -1: not known
+  bool backOff_ = false;      // the last E was LinuxCNC's fixed 0.254 mm
+  bool ended_ = false;        // M2 or M30 written
   Distance distance_ = Distance::Absolute;
 };
 
@@ -290,6 +291,7 @@ bool Writer::words(const ir::Block& b, Frame frame, std::string& out) {
   for (const ir::Word& w : b.words) {
     if (w.is('G') && w.isLiteral() && (w.number == 90 || w.number == 91))
       distance_ = w.number == 90 ? Distance::Absolute : Distance::Incremental;
+    if (w.is('G') && w.isLiteral() && w.number <= 3) motion_ = static_cast<int>(w.number);
     if (w.is('G') && w.isLiteral() && w.number >= 17 && w.number <= 19) // the drilling axis
       drill_ = w.number == 17 ? 'Z' : w.number == 18 ? 'Y' : 'X';
   }
@@ -343,15 +345,17 @@ bool Writer::words(const ir::Block& b, Frame frame, std::string& out) {
   for (const ir::Word& w : b.words) {
     if (w.is('G') || w.is('M')) continue;
     if (inCycle && (w.is('E') || w.is('I') || w.is('R') || w.is(drill_))) continue;
-    if (w.is('E') || (w.is('L') && !inCycle))
-      return fail(w.range, w.address + " word", "it has no meaning outside a cycle or call");
+    // NCT's turns of an arc (L) are LinuxCNC's P
+    const bool turns = w.is('L') && !inCycle && (motion_ == 2 || motion_ == 3);
+    if (w.is('E') || (w.is('L') && !inCycle && !turns))
+      return fail(w.range, w.address + " word", "it has no meaning outside a cycle, arc or call");
     std::string v;
     if (!value(w, frame, v)) return false;
     if (w.incremental && distance_ == Distance::Absolute) // from LinuxCNC's current position
       v = fmt::format("[#{}{}{}]", 5420 + std::string_view("XYZABC").find(w.address[0]),
                       v.front() == '-' ? "" : "+", v);
     std::string& to = (motion || inCycle) && (w.is('S') || w.is('T')) ? after : line;
-    to += (to.empty() ? "" : " ") + w.address + v;
+    to += (to.empty() ? "" : " ") + (turns ? std::string("P") : w.address) + v;
   }
   if (inCycle && !cycleWords(b, cycle, frame, line)) return false;
   for (const ir::Word* m : ms) {

@@ -106,6 +106,16 @@ TEST_F(TranslateNgc, ACycleCodeChangeRepeatsTheBottomOnThePlanesDrillingAxis) {
                        verifiedLine("G19"));
 }
 
+// NCT's L on an arc counts its turns, LinuxCNC's P (nct-vs-linuxcnc.md); modal G2/G3 too.
+TEST_F(TranslateNgc, ArcTurnsAreLinuxCncsP) {
+  write("ARC.nct", "G90 G17 G21 G94\nG0 X0 Y0 Z0\nG2 X10 Y0 Z-5 I5 L2 F100\nX0 Z-10 I-5 L3\nM30\n");
+  Result r;
+  EXPECT_EQ(translate("ARC", r), std::string(kHeader) +
+                                     "G90 G17 G21 G94\nG0 X0 Y0 Z0\nG2 X10 Y0 Z-5 I5 P2 F100\n"
+                                     "X0 Z-10 I-5 P3\nM30\n");
+  EXPECT_EQ(r.err, verifiedLine("ARC"));
+}
+
 // M98 P2001 L3 with the subprogram in its own file: an o2001 sub before the main program, called
 // by a repeat; the I operator reads LinuxCNC's current position.
 TEST_F(TranslateNgc, SubprogramWithRepeatsIsKeptAsAnOWordSub) {
