@@ -305,7 +305,9 @@ bool Writer::words(const ir::Block& b, Frame frame, std::string& out) {
         return fail(w.range, w.address + " with a variable", "its code is known only at run time");
       const double v = w.number;
       if (w.is('M')) {
-        if (v == 99) return fail(w.range, "M99 with other words", "kept flat");
+        if (v == 99)
+          return fail(w.range, "M99 with other words",
+                      "only a lone M99 at the end of a subprogram is LinuxCNC's endsub");
         if (!keptM(v))
           return fail(w.range, "M" + emit::formatNumber(v), "a function of the NCT machine");
         ms.push_back(&w);
@@ -429,7 +431,10 @@ bool Writer::defineSub(const ir::Word& p, Frame frame, int& number) {
   number = static_cast<int>(p.number);
   auto it = subs_.find(number);
   if (it != subs_.end()) {
-    if (!it->second.written) return fail(p.range, "a recursive call", "kept flat");
+    if (!it->second.written)
+      return fail(p.range, "a recursive call",
+                  "a subprogram is defined once, before the main program, and its recursion "
+                  "depth is known only at run time");
     if (it->second.frame != frame)
       return fail(p.range, "a program called by both M98 and G65",
                   "its local variables differ between the two");
