@@ -72,7 +72,8 @@ struct TranslateOptions {
   std::string to;
   std::string output; // a file, or the folder of a batch; empty: standard output
   std::string setup;
-  bool verify = true; // --no-verify: write without the equivalence proof
+  bool verify = true;        // --no-verify: write without the equivalence proof
+  bool writeOffsets = false; // --write-offsets: ngc sets the setup's work offsets by G10 L2
   double tolerance = 0.001;
   std::string rs274 = "rs274";
   unsigned batchJobs = 2; // --jobs of a batch: translations at once

@@ -180,6 +180,8 @@ int main(int argc, char** argv) {
                         "machine setup (JSON); in a batch, a program's NAME.setup.json wins");
   translate->add_flag("!--no-verify", translateOpt.verify,
                       "write without proving the result equivalent (gcx equiv)");
+  translate->add_flag("--write-offsets", translateOpt.writeOffsets,
+                      "ngc: set the setup's work offsets by G10 L2 at the start of the program");
   translate->add_option("--tol", translateOpt.tolerance, "how far the paths may be apart (mm)")
       ->check(CLI::PositiveNumber);
   translate->add_option("--rs274", translateOpt.rs274,

@@ -86,6 +86,7 @@ std::vector<std::string> childArguments(const Job& j, const TranslateOptions& op
   if (!j.setup.empty()) a.insert(a.end(), {"--setup", j.setup});
   if (!opt.common.dialect.empty()) a.insert(a.end(), {"--from", opt.common.dialect});
   if (!opt.verify) a.push_back("--no-verify");
+  if (opt.writeOffsets) a.push_back("--write-offsets");
   a.insert(a.end(), {"--tol", fmt::format("{}", opt.tolerance), "--rs274", opt.rs274});
   for (const std::string& lib : opt.common.libraryDirs)
     a.insert(a.end(), {"--lib", lib});

@@ -6,12 +6,14 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <unistd.h>
 
 #include "cli/commands.h"
 #include "cli/equiv_program.h"
 #include "cli/translate_batch.h"
 #include "cli/translate_flat.h"
+#include "cli/translate_ngc.h"
 #include "cli/translate_target.h"
 #include "diag/diagnostic.h"
 #include "dialect/dialect.h"
@@ -39,14 +41,13 @@ bool copyToStdout(const fs::path& file) {
   return static_cast<bool>(std::cout);
 }
 
-// Runs source and translation through the equivalence engine; prints why they differ.
-bool verified(const std::string& source, const fs::path& result, const TranslateTarget& target,
-              const TranslateOptions& opt) {
+// Runs source and translation through the equivalence engine; prints why they differ on err.
+bool verified(const std::string& source, const fs::path& result, bool resultReadsSetup,
+              const TranslateOptions& opt, std::ostream& err = std::cerr) {
   equiv::ProgramInput a{source, opt.setup, equiv::ProgramInput::Reader::Auto};
-  // canonical motion has the offsets of the setup written into it; a dialect's program reads
-  // them from the same setup as its source
-  equiv::ProgramInput b{result.string(),
-                        target.dialect && !target.motionWriter ? opt.setup : std::string(),
+  // canonical motion has the offsets of the setup written into it; a dialect's program (and
+  // structured ngc) reads them from the same setup as its source
+  equiv::ProgramInput b{result.string(), resultReadsSetup ? opt.setup : std::string(),
                         equiv::ProgramInput::Reader::Auto};
   equiv::EquivOptions o;
   o.gcxProgram = gcxProgramMaker(opt.common);
@@ -56,12 +57,12 @@ bool verified(const std::string& source, const fs::path& result, const Translate
   if (!out.a || !out.b) return false;
   for (const equiv::ProgramSide* side : {out.a.get(), out.b.get()})
     for (const diag::Diagnostic& d : side->diagnostics())
-      std::cerr << diag::renderText(d, side->sources());
+      err << diag::renderText(d, side->sources());
   if (!out.ok) return false;
   if (out.result.equivalent) return true;
-  std::cerr << "gcx: error: the translation does not move the tool like " << source
-            << "; nothing was written:\n"
-            << equiv::renderText(out, opt.tolerance);
+  err << "gcx: error: the translation does not move the tool like " << source
+      << "; nothing was written:\n"
+      << equiv::renderText(out, opt.tolerance);
   return false;
 }
 
@@ -96,10 +97,25 @@ int runTranslate(const std::string& input, const TranslateOptions& opt) {
       fs::remove(path, ec);
     }
   } discard{staged};
-  if (const int rc = target->motionWriter ? writeFlatMotion(input, *target, opt, staged.string())
-                                          : runExpand(input, expand))
-    return rc;
-  if (opt.verify && !verified(input, staged, *target, opt)) return ProgramErrors;
+  std::string note = target->note;
+  bool kept = false;
+  if (target->name == "ngc") {
+    // LinuxCNC's own structure where it means the same, proven like the flat motion
+    const NgcStructure ngc = writeStructuredNgc(*source, input, staged.string(), opt);
+    std::ostringstream proof;
+    kept = ngc.written && (!opt.verify || verified(input, staged, true, opt, proof));
+    note = ngcNote(ngc, kept, target->note, proof.str());
+  }
+  if (!kept) {
+    if (const int rc = target->motionWriter
+                           ? writeFlatMotion(input, *target, opt, staged.string())
+                           : runExpand(input, expand))
+      return rc;
+    if (target->name == "ngc" && !prependComment(staged.string(), note)) return UsageError;
+    if (opt.verify &&
+        !verified(input, staged, target->dialect && !target->motionWriter, opt))
+      return ProgramErrors;
+  }
   if (opt.output.empty()) {
     if (!copyToStdout(staged)) return UsageError;
   } else {
@@ -110,7 +126,7 @@ int runTranslate(const std::string& input, const TranslateOptions& opt) {
       return UsageError;
     }
   }
-  if (!target->note.empty()) std::cerr << "gcx: note: " << input << ": " << target->note << '\n';
+  if (!note.empty()) std::cerr << "gcx: note: " << input << ": " << note << '\n';
   if (opt.verify)
     std::cerr << fmt::format("gcx: {} -> {}: verified, moves the tool like the source within {} "
                              "mm\n",

@@ -57,10 +57,9 @@ std::optional<TranslateTarget> translateTarget(const Dialect& source, const std:
   t.expandTo = "canonical";
   if (to == "canonical") return t; // flat motion by definition: nothing to note
   if (to == "ngc") {
-    // LinuxCNC's own structure (O-word subroutines and loops, G81-G89) needs an emitter that
-    // proves each construct means the same there; until it exists the motion is written flat
-    t.note = "written as plain G0-G3 motion: keeping cycles, subprograms, loops and variables "
-             "as LinuxCNC O-words and G81-G89 is not implemented yet";
+    // LinuxCNC's own structure (O-word subroutines and loops, G81-G89) where it means the
+    // same (cli/translate_ngc.h); this is what is written when it does not
+    t.note = "written as plain G0-G3 motion";
     return t;
   }
   const Dialect* target = findDialect(to);

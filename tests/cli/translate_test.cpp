@@ -29,17 +29,22 @@ constexpr const char* kCanonical =
     "(gcx canonical motion: machine frame, mm, absolute; offsets and tool lengths are in the "
     "coordinates)\nG21 G90 G94 G17 G40 G49 G80 G54\nG0 X10 Y5 Z0\nG1 X20 Y5 Z0 F100\nM30\n";
 
+// A jump has no LinuxCNC form (tests/cli/translate_ngc_test.cpp has the structures ngc keeps).
 TEST_F(TranslateCli, AVerifiedTranslationIsWrittenWithANoteOnWhatWasExpanded) {
-  write("A.nct", kProgram);
-  const Result r = gcx("translate A.nct --to ngc -o A.ngc");
+  write("A.nct", "G90 G0 X10 Y5\nG1 X20 F100\nGOTO5\nN5 M30\n");
+  const Result r = gcx("translate A.nct --to canonical -o A.ngc");
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(readFile(dir_ / "A.ngc"), kCanonical);
-  EXPECT_EQ(r.err, "gcx: note: A.nct: written as plain G0-G3 motion: keeping cycles, subprograms, "
-                   "loops and variables as LinuxCNC O-words and G81-G89 is not implemented yet\n"
-                   "gcx: A.nct -> A.ngc: verified, moves the tool like the source within 0.001 "
-                   "mm\n");
+  const Result n = gcx("translate A.nct --to ngc -o N.ngc");
+  EXPECT_EQ(n.exitCode, 0) << n.err;
+  const std::string note =
+      "written as plain G0-G3 motion: A.nct:3: GOTO: LinuxCNC has no jump to a block number";
+  EXPECT_EQ(readFile(dir_ / "N.ngc"), "(" + note + ")\n" + kCanonical);
+  EXPECT_EQ(n.err, "gcx: note: A.nct: " + note +
+                       "\ngcx: A.nct -> N.ngc: verified, moves the tool like the source within "
+                       "0.001 mm\n");
   // nothing staged is left behind
-  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 2);
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 3);
 }
 
 TEST_F(TranslateCli, ToStandardOutputAfterTheProof) {
@@ -102,7 +107,9 @@ TEST_F(TranslateCli, ABatchTranslatesATreeAndReportsEachProgram) {
   EXPECT_NE(r.out.find(": 2 verified, 1 failed; 2 other files skipped;"), std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("failed: b/TWO.nct: "), std::string::npos) << r.out;
-  EXPECT_NE(readFile(dir_ / "out/a/ONE.ngc").find("G0 X110 Y5 Z0\n"), std::string::npos);
+  // kept as written: the program runs in the frame of its setup beside it, as the proof did
+  EXPECT_NE(readFile(dir_ / "out/a/ONE.ngc").find("\nG90 G0 X10 Y5\nG1 X20 F100\nM30\n"),
+            std::string::npos);
   EXPECT_TRUE(fs::exists(dir_ / "out/b/THREE.ngc"));
   EXPECT_FALSE(fs::exists(dir_ / "out/b/TWO.ngc"));
   const std::string csv = readFile(dir_ / "out/report.csv");
