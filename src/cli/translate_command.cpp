@@ -94,7 +94,9 @@ int runTranslate(const std::string& input, const TranslateOptions& opt) {
       fs::remove(path, ec);
     }
   } discard{staged};
-  if (const int rc = runExpand(input, expand)) return rc;
+  if (const int rc = target->printSource ? runFmt(input, expand.output, expand.common)
+                                         : runExpand(input, expand))
+    return rc;
   if (opt.verify && !verified(input, staged, *target, opt)) return ProgramErrors;
   if (opt.output.empty()) {
     if (!copyToStdout(staged)) return UsageError;

@@ -14,6 +14,7 @@ struct TranslateTarget {
   const Dialect* dialect = nullptr; // null: RS274/NGC that LinuxCNC runs
   std::string extension;            // of the output file: ".ngc", ".nct"
   std::string note;                 // the structures the output does not keep, and why
+  bool printSource = false;         // the source printed back in its own dialect (gcx fmt)
 };
 
 /// The target, or nullopt with the reason in why (an unknown target, or a pair of dialects gcx

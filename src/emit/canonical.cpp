@@ -109,7 +109,11 @@ void CanonicalEmitter::event(const motion::Event& e) {
   case Kind::Arc: {
     feedMode(e);
     const motion::ArcGeometry arc(e);
-    if (arc.isSpiral() && std::fabs(arc.startRadius() - arc.endRadius()) > 1e-9) {
+    // a spiral is written as lines, unless its producer declares the circle (equal radii: an
+    // end point within the dialect's arc tolerance, WL4 §3.4), which G2/G3 write as programmed
+    const bool declaredCircle = e.startRadius > 0 && e.startRadius == e.endRadius;
+    if (arc.isSpiral() && std::fabs(arc.startRadius() - arc.endRadius()) > 1e-9 &&
+        !declaredCircle) {
       std::vector<motion::Vec3> pts;
       motion::appendArcPoints(arc, opt_.chordTolerance, pts);
       // Point i is at t = (i+1)/n; the extra axes move linearly in t like the height.

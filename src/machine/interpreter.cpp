@@ -342,6 +342,10 @@ bool Interpreter::setModal(const GCodeSpec& g) {
   case GAction::ArcCCW:
   case GAction::FilletCW:
   case GAction::FilletCCW:
+  case GAction::ThreadMotion:
+  case GAction::ThreadReciprocating:
+    if (g.action != GAction::ThreadMotion && g.action != GAction::ThreadReciprocating)
+      threadLead_.reset(); // a thread sequence ends with the next G0-G3 (wl4.md §3.6)
     state_.motion = g.action;
     if (state_.cycle == GAction::DrillCycle) cancelCycleMode(); // like G80 (000:9479-9480)
     return true;
@@ -998,6 +1002,9 @@ bool Interpreter::move(const BlockWords& w) {
   case GAction::FilletCW:
   case GAction::FilletCCW:
     return fillet(to, extraTo);
+  case GAction::ThreadMotion:
+  case GAction::ThreadReciprocating:
+    return threadMove(w, to, extraTo);
   case GAction::TurningCycle:
     return turningCycle(static_cast<cycles::TurningCycle>(turningMode_->arg), w);
   default:
@@ -1200,7 +1207,7 @@ bool Interpreter::arcTo(const Vec3& end, const Vec3& centre, bool cw, int turns,
   e.clockwise = cw != mirrored;
   e.turns = turns - 1;
   e.startRadius = r0 * k;
-  e.endRadius = r1 * k;
+  e.endRadius = profile_.machine.arcWithinToleranceIsCircle ? e.startRadius : r1 * k;
   e.feed = feed;
   e.perRevolution = state_.perRevolution;
   machine_ = e.end;
@@ -1294,9 +1301,13 @@ bool Interpreter::mcodes(const BlockWords& w, MTiming timing) {
       e.value = state_.tool;
       break;
     case MAction::Coolant:
+      state_.coolant = code;
       e.kind = Kind::Coolant;
       e.value = code;
       break;
+    case MAction::GearRange:
+      state_.gearRange = code;
+      continue;
     case MAction::Stop:
     case MAction::OptionalStop:
       e.kind = Kind::Stop;
