@@ -71,7 +71,7 @@ Profile build() {
       {780, 0, "transverse roughing cycle"},
       {790, 0, "reserved cycle (%1)"},
       {360, 0, "return to machine zero", A::ReferenceReturn}, // values ignored (§3.7)
-      {380, 0, "probing move"},
+      {380, 0, "probing move", A::ProbeReturn},               // no touch assumed (§3.8)
       {170, 2, "plane XY", A::PlaneXY},
       {180, 2, "plane ZX", A::PlaneZX},
       {190, 2, "plane YZ", A::PlaneYZ},

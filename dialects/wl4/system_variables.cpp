@@ -57,6 +57,11 @@ std::optional<macro::Value> SystemVariables::read(int number, const SourceRange&
   case 200: // the tool M6 put in the spindle
     return macro::Value::of(s.tool);
   }
+  if (number >= 1000 && number <= 1027 && number % 10 <= 2) { // G38's results (§3.8)
+    const machine::Interpreter::ProbeResult& p = machine_.probeResult();
+    const machine::Vec3& v = number < 1010 ? p.machine : number < 1020 ? p.work : p.distance;
+    return macro::Value::of(v[number % 10]);
+  }
   if (number == 108 || (number >= 130 && number <= 140)) {
     auto it = cycle_.find(number);
     return macro::Value::of(it == cycle_.end() ? 0.0 : it->second);

@@ -105,6 +105,7 @@ inline constexpr const char* ErrorStop = "GCX064";      // a block that jumps to
 inline constexpr const char* SystemReadOnly = "GCX065"; // WL4 #100 and up are read-only
 inline constexpr const char* Wl4ThreadNotExpressible = "GCX066"; // G32/G33 phase, lead change
 inline constexpr const char* Wl4ReturnInMain = "GCX067";         // M99 in the main program
+inline constexpr const char* Wl4ProbeWithoutTouch = "GCXW24";    // G38: no probe model
 
 // --- gcx: setup file (--setup FILE, src/machine/setup)
 inline constexpr const char* SetupNotJson = "GCX020";

@@ -111,6 +111,7 @@ enum class GAction : unsigned char {
   VectorHold,          // radius compensation: the block ends with the vector it starts with
   ThreadMotion,        // spindle-synchronised line, F the lead of the longest axis (WL4 G32)
   ThreadReciprocating, // the same out, spindle reversed, back to the start (WL4 G33)
+  ProbeReturn,         // the block's move runs out and back to its start (WL4 G38)
 };
 
 struct GCodeSpec {

@@ -173,6 +173,7 @@ void Interpreter::emit(motion::Event e) {
     return;
   }
   if (e.kind == Kind::Rapid || e.kind == Kind::Feed || e.kind == Kind::Arc) rememberPlaneMove(e);
+  if (probing_ && motion::isMotion(e)) probePath_.push_back(e); // G38 runs back along it
   // chamfers and roundings, then radius compensation, then the sink
   struct ToCompensation : motion::Sink {
     CompensationStage& comp;
@@ -325,8 +326,15 @@ bool Interpreter::executeBlock(const ir::Block& block) {
   const bool arcWithCentreOnly =
       (state_.motion == GAction::ArcCW || state_.motion == GAction::ArcCCW) &&
       (w.ijk[0] || w.ijk[1] || w.ijk[2] || (w.r && profile_.machine.strictArcRadius));
+  const ir::Word* probe = w.findAction(GAction::ProbeReturn);
+  const Vec3 probeFrom = program_;
+  if (probe) {
+    probing_ = true;
+    probePath_.clear();
+  }
   if (!consumed && (w.hasAxisWord() || arcWithCentreOnly || w.angle)) // ,A alone: a direction
     if (!move(w)) return false;
+  if (probe && !probeBack(*probe, probeFrom)) return false;
   if (pendingDwell_) {
     emitDwell(*pendingDwell_);
     pendingDwell_.reset();
@@ -470,7 +478,8 @@ bool Interpreter::applyModal(const BlockWords& w) {
     case GAction::OneSidedPositioning: // move()
     case GAction::ImplicitPlus:
     case GAction::ImplicitMinus:
-      break; // applyNonMotion
+    case GAction::ProbeReturn: // probeBack() after the move
+      break;                   // applyNonMotion
     case GAction::RadiusCompLeft:
     case GAction::RadiusCompRight:
       state_.radiusComp = g->action; // radiusCompensation() starts the stage

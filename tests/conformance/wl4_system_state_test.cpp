@@ -1,6 +1,7 @@
 // The system variables of wl4.md §2.2 / §6.2 that read the machine's state (#114 coolant,
 // #117 gear range, #141 D, #200 the tool in the spindle), the canned cycles %87/%88 that save
-// and restore the gear range, G36 home (§3.7) and M99 in the main program (§6.7).
+// and restore the gear range, G36 home (§3.7), the G38 probing move and its results #1000-#1027
+// (§3.8) and M99 in the main program (§6.7).
 #include <gtest/gtest.h>
 
 #include "support/wl4_support.h"
@@ -62,6 +63,28 @@ TEST(Wl4Motion_3_7, G36GoesToMachineZeroOnTheNamedAxesWhateverTheirValues) {
   ASSERT_TRUE(r.errors.empty()) << r.rendered;
   // machine frame: home Z, then X and Y together; G0 stays modal, X1 is in G54 again
   EXPECT_EQ(r.motion(), (V{"R 110,60,30", "R 110,60,0", "R 0,0,0", "R 101,0,0", "END"}));
+}
+
+TEST(Wl4Motion_3_8, G38RunsOutAndBackAndKeepsTheEndPointWithoutAProbeModel) {
+  machine::Setup s;
+  s.workOffsets["G54"] = {100, 0, 0};
+  MacroRun r = runWl4({{"main.wl4", "%P\nG54 G0 X0 Y0 Z0\nG94G38G1Y100F200\n"
+                                    "#30=#1001 #31=#1011 #32=#1021 #33=#1010\nG0 X5\nM2\n%\n"}},
+                      "main.wl4", s, {30, 31, 32, 33});
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(r.motion(), (V{"R 100,0,0", "L 100,100,0 F200", "L 100,0,0 F200", "R 105,0,0", "END"}));
+  EXPECT_EQ(r.vars[30].number, 100); // machine Y of the (assumed) touch point: the end point
+  EXPECT_EQ(r.vars[31].number, 100); // work Y
+  EXPECT_EQ(r.vars[32].number, 100); // from the block's start
+  EXPECT_EQ(r.vars[33].number, 0);   // work X
+  ASSERT_EQ(r.warnings.size(), 1u) << r.rendered;
+  EXPECT_NE(r.warnings[0].find(":3:4 GCXW24"), std::string::npos) << r.warnings[0];
+}
+
+TEST(Wl4Motion_3_8, G38OnAnArcReturnsAlongTheSameArc) {
+  MacroRun r = runWl4("%P\nG17 G0 X0 Y0\nG94G38G2X200Y0R100F200\nM2\n%\n");
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(r.motion(), (V{"CW 200,0,0 C100,0 r100 θ180", "CCW 0,0,0 C100,0 r100 θ180", "END"}));
 }
 
 TEST(Wl4Calls_6_7, M99InTheMainProgramIsAnError) {
