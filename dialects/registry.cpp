@@ -81,7 +81,8 @@ const std::vector<Dialect>& dialects() {
               },
               &wl4::makeEmitter,
               &wl4::emitterCapabilities,
-              {}},
+              {},
+              true},
   };
   return all;
 }

@@ -433,9 +433,11 @@ std::optional<ir::Expr> Parser::primary() {
   if (c == '#') {
     auto v = variable();
     if (!v) return std::nullopt;
-    if (peek() == '=' && !peek2("==")) { // #n=factor binds tighter than any operator (§6.4)
+    if (peek() == '=' && !peek2("==")) {    // #n=factor binds tighter than any operator (§6.4)
+      if (!deeper(at)) return std::nullopt; // a chain #1=#2=... nests like brackets
       ++p_;
       auto f = factor();
+      --depth_;
       if (!f) return std::nullopt;
       return node(ir::ExprKind::Assign, at, {std::move(*v), std::move(*f)});
     }

@@ -1,5 +1,6 @@
 #include "dialects/wl4/control_flow.h"
 
+#include "diag/codes.h"
 #include "dialects/wl4/system_programs.h"
 #include "dialects/wl4/system_variables.h"
 #include "dialects/wl4/word_value_rules.h"
@@ -95,6 +96,7 @@ const ControlFlow& controlFlow() {
       return std::unique_ptr<macro::SystemVariableStore>(std::make_unique<SystemVariables>(m, d));
     };
     f.axisWordsNoMove = &axisWordsNoMove;
+    f.returnInMainError = diag::code::Wl4ReturnInMain; // M99 in the main program (§6.7)
     f.maxCallDepth = 5; // the main program and 5 levels; cycles and %1 count (§6.7)
     return f;
   }();

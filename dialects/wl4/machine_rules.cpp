@@ -9,13 +9,29 @@ std::vector<MCodeSpec> mcodes() {
   using T = MTiming;
   // Table 4 (wl4.md §2.3); its timing columns were lost, the timing is the spec's [D]
   return {
-      {0, A::Stop, T::AfterMotion},        {1, A::OptionalStop, T::AfterMotion},
-      {2, A::End, T::AfterMotion},         {30, A::EndRewind, T::AfterMotion},
-      {3, A::SpindleCW, T::BeforeMotion},  {4, A::SpindleCCW, T::BeforeMotion},
-      {5, A::SpindleStop, T::AfterMotion}, {19, A::SpindleOrient, T::BeforeMotion},
-      {6, A::ToolChange, T::BeforeMotion}, {7, A::Coolant, T::BeforeMotion},
-      {8, A::Coolant, T::BeforeMotion},    {9, A::Coolant, T::AfterMotion},
+      {0, A::Stop, T::AfterMotion},
+      {1, A::OptionalStop, T::AfterMotion},
+      {2, A::End, T::AfterMotion},
+      {30, A::EndRewind, T::AfterMotion},
+      {3, A::SpindleCW, T::BeforeMotion},
+      {4, A::SpindleCCW, T::BeforeMotion},
+      {5, A::SpindleStop, T::AfterMotion},
+      {19, A::SpindleOrient, T::BeforeMotion},
+      {6, A::ToolChange, T::BeforeMotion},
+      {7, A::Coolant, T::BeforeMotion},
+      {8, A::Coolant, T::BeforeMotion},
+      {9, A::Coolant, T::AfterMotion},
       {99, A::Subprogram, T::AfterMotion},
+      // gear ranges: #117 reports the last one (§2.2), %87 and %88 restore it
+      {40, A::GearRange, T::BeforeMotion},
+      {41, A::GearRange, T::BeforeMotion},
+      {42, A::GearRange, T::BeforeMotion},
+      {43, A::GearRange, T::BeforeMotion},
+      {44, A::GearRange, T::BeforeMotion},
+      {45, A::GearRange, T::BeforeMotion},
+      {46, A::GearRange, T::BeforeMotion},
+      {47, A::GearRange, T::BeforeMotion},
+      {48, A::GearRange, T::BeforeMotion},
   };
 }
 
@@ -24,14 +40,22 @@ std::vector<MCodeSpec> mcodes() {
 MachineRules machineRules() {
   MachineRules r;
   r.settings = {{Setting::ArcRadiusTolerance, "arc_tolerance", nullptr, 0.002,
-                 "arc end-point tolerance"}}; // wl4.md §0.2
+                 "arc end-point tolerance"}, // wl4.md §0.2
+                // machine.kind = lathe (§0.2): X and U are diameters, I a radius (002:659)
+                {Setting::DiameterX, "lathe", nullptr, 0, "lathe: X is a diameter"},
+                // #117 before the first M41-M48 (§2.2): the machine's, 41 unless set [D]
+                {Setting::PowerOnGearRange, "gear_range", nullptr, 41, "power-on gear range"}};
   // no numbered parameters: the manual gives none (§0.2); arc_tolerance is gcx's setting
   r.mcodes = mcodes();
   r.speedTiming = r.toolTiming = MTiming::BeforeMotion;
   r.skipSense = SkipSense::RunWhenOn; // `/` blocks run only with the flag set (§1.7)
   // G4 E<seconds> (002:979); the cycle texts write G4 X (§10 item 5): both read as seconds
   r.dwell = {'E', 1, "G4 without E (seconds)", 0, "", 'X'};
-  r.arcL = ArcLMeaning::None;            // L is a call, never an arc word
+  r.arcL = ArcLMeaning::None;          // L is a call, never an arc word
+  r.arcWithinToleranceIsCircle = true; // |CE| - |CS| up to 0.002 mm: still the circle (§3.4)
+  // G36 goes straight to machine zero on the named axes, whatever their values (§3.7); WL4 has
+  // no other reference point, so the key of point n > 0 is never read
+  r.directReferencePointKey = "reference_point_{1}_axis_{0}";
   r.workOffsetEndsSetCoordinates = true; // G92 is cancelled by G53-G59 (§3.11)
   r.workOffsetNames = {"G54", "G55", "G56", "G57", "G58", "G59"};
   // radius compensation (wl4.md §4.2): an outer corner whose offsets leave a gap above Delt_L

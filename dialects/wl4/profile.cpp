@@ -55,8 +55,8 @@ Profile build() {
       {30, 1, "circular interpolation CCW", A::ArcCCW},
       {120, 1, "90-degree fillet CW", A::FilletCW},
       {130, 1, "90-degree fillet CCW", A::FilletCCW},
-      {320, 1, "thread motion"},
-      {330, 1, "reciprocating thread motion"},
+      {320, 1, "thread motion", A::ThreadMotion},
+      {330, 1, "reciprocating thread motion", A::ThreadReciprocating},
       {40, 0, "dwell", A::Dwell},
       {90, 0, "exact stop", A::ExactStopOnce},
       {310, 0, "threading cycle (%1)"},
@@ -70,8 +70,8 @@ Profile build() {
       {770, 0, "longitudinal roughing cycle"},
       {780, 0, "transverse roughing cycle"},
       {790, 0, "reserved cycle (%1)"},
-      {360, 0, "return to machine zero"},
-      {380, 0, "probing move"},
+      {360, 0, "return to machine zero", A::ReferenceReturn}, // values ignored (§3.7)
+      {380, 0, "probing move", A::ProbeReturn},               // no touch assumed (§3.8)
       {170, 2, "plane XY", A::PlaneXY},
       {180, 2, "plane ZX", A::PlaneZX},
       {190, 2, "plane YZ", A::PlaneYZ},

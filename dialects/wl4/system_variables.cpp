@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include "diag/codes.h"
+#include "dialects/wl4/profile.h"
+#include "machine/settings.h"
 
 namespace gcx::wl4 {
 
@@ -40,10 +42,25 @@ std::optional<macro::Value> SystemVariables::read(int number, const SourceRange&
     return macro::Value::of(s.spindleDirection > 0 ? 3 : s.spindleDirection < 0 ? 4 : 5);
   case 120:
     return macro::Value::of(s.lastS);
+  case 114: // M7-M9
+    return macro::Value::of(s.coolant);
+  case 117: // M41-M48; before any, the setup's power-on gear range
+    return macro::Value::of(s.gearRange != 0 ? s.gearRange
+                                             : machine::setting(wl4::profile(), machine_.setup(),
+                                                                Setting::PowerOnGearRange));
   case 121:
     return macro::Value::of(s.selectedTool);
   case 139:
     return macro::Value::of(s.feed);
+  case 141:
+    return macro::Value::of(s.lastD);
+  case 200: // the tool M6 put in the spindle
+    return macro::Value::of(s.tool);
+  }
+  if (number >= 1000 && number <= 1027 && number % 10 <= 2) { // G38's results (§3.8)
+    const machine::Interpreter::ProbeResult& p = machine_.probeResult();
+    const machine::Vec3& v = number < 1010 ? p.machine : number < 1020 ? p.work : p.distance;
+    return macro::Value::of(v[number % 10]);
   }
   if (number == 108 || (number >= 130 && number <= 140)) {
     auto it = cycle_.find(number);
@@ -84,13 +101,9 @@ bool SystemVariables::openCycle(const ir::Block& flat, const ir::Word& code) {
                              cycle));
     return false;
   }
-  if (cycle == 31) {
-    diags_.error(diag::code::NotImplemented, code.range,
-                 "G31 threads with G32, which gcx does not execute yet (wl4.md §3.6, §5.5)");
-    return false;
-  }
-  const machine::Vec3& at = machine_.programPosition();
+  machine::Vec3 at = machine_.programPosition();
   const bool incremental = machine_.state().incremental;
+  if (machine_.state().diameterAxes & 1u) at[0] *= 2; // #130/#131 as the X words: diameters
   cycle_.clear();
   cycle_[108] = cycle;
   const char* absolute = "XYZ";

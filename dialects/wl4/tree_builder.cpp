@@ -318,6 +318,18 @@ std::optional<ir::Expr> TreeToIr::primary(P::PrimaryContext* c) {
   const std::size_t at = c->getStart()->getStartIndex();
   if (P::NumberContext* n = c->number())
     return ir::Expr::literal(std::stod(n->getText()), rangeFrom(at, c));
+  if (c->variable() && c->ASSIGN()) { // a chain #1=#2=... nests like brackets
+    if (++depth_ > kMaxExpressionDepth) {
+      if (before(at)) {
+        reportTooDeep(raw_, at, diags_);
+        failed(true);
+      }
+      return std::nullopt;
+    }
+    auto e = assignedVariable(c->variable(), c->ASSIGN(), c->factor(), c);
+    --depth_;
+    return e;
+  }
   if (c->variable()) return assignedVariable(c->variable(), c->ASSIGN(), c->factor(), c);
   const auto parens = c->LPAREN();
   const auto exprs = c->expr();
@@ -444,10 +456,20 @@ void GrammarParser::Impl::report(const front::RawBlock& raw, std::size_t textSiz
 
 std::size_t GrammarParser::Impl::cutForDepth() {
   const std::vector<Token*> toks = visibleTokens();
-  int open = 0;
+  // brackets nest, and so does a chain of assignments #1=#2=#3... (each '=' right after the
+  // variable the previous '=' assigned)
+  int open = 0, chain = 0;
+  std::size_t lastAssign = 0;
   for (std::size_t k = 0; k + 1 < toks.size(); ++k) {
-    open += toks[k]->getType() == P::LPAREN ? 1 : toks[k]->getType() == P::RPAREN ? -1 : 0;
-    if (open > kMaxExpressionDepth + 1 && toks[k + 1]->getType() != Token::EOF)
+    const std::size_t type = toks[k]->getType();
+    open += type == P::LPAREN ? 1 : type == P::RPAREN ? -1 : 0;
+    if (type == P::ASSIGN) {
+      const bool chained = chain > 0 && k == lastAssign + 3 && toks[k - 2]->getType() == P::HASH &&
+                           toks[k - 1]->getType() == P::DIGITS;
+      chain = chained ? chain + 1 : 1;
+      lastAssign = k;
+    }
+    if (open + chain > kMaxExpressionDepth + 1 && toks[k + 1]->getType() != Token::EOF)
       return toks[k + 1]->getStopIndex() + 1;
   }
   return std::string::npos;

@@ -164,6 +164,10 @@ bool Expander::pushFrame(Frame& f, const LoadedProgram* program, LocalFrame fram
 bool Expander::returnFromCall(Frame& f, const ir::Block& flat, const CodeMatch& m) {
   const ir::Word* p = m.program; // where the caller continues (§5.2 R4)
   const ir::Word* l = m.repeat;  // how often the callee runs again (§5.2 R5)
+  if (stack_.size() == 1 && flow_.returnInMainError)
+    return fail(
+        flow_.returnInMainError, m.code->range,
+        fmt::format("{} in the main program: there is no call to return from", codeText(*m.code)));
   if (stack_.size() == 1) {
     // a return in the main program: back to its start or to the block P (§5.2 R6), endlessly
     if (++jumps_ > limits_.maxJumps)

@@ -107,13 +107,12 @@ int runTranslate(const std::string& input, const TranslateOptions& opt) {
     note = ngcNote(ngc, kept, target->note, proof.str());
   }
   if (!kept) {
-    if (const int rc = target->motionWriter
-                           ? writeFlatMotion(input, *target, opt, staged.string())
-                           : runExpand(input, expand))
+    if (const int rc = target->motionWriter  ? writeFlatMotion(input, *target, opt, staged.string())
+                       : target->printSource ? runFmt(input, expand.output, expand.common)
+                                             : runExpand(input, expand))
       return rc;
     if (target->name == "ngc" && !prependComment(staged.string(), note)) return UsageError;
-    if (opt.verify &&
-        !verified(input, staged, target->dialect && !target->motionWriter, opt))
+    if (opt.verify && !verified(input, staged, target->dialect && !target->motionWriter, opt))
       return ProgramErrors;
   }
   if (opt.output.empty()) {

@@ -71,6 +71,10 @@ std::optional<TranslateTarget> translateTarget(const Dialect& source, const std:
   t.dialect = target;
   t.expandTo = target->name;
   t.extension = target->extensions.empty() ? "" : target->extensions.front();
+  if (target->keepsStructureToItself) { // the program as written: every structure kept
+    t.printSource = true;
+    return t;
+  }
   const std::string flat = flattened(target->emits());
   if (!flat.empty()) t.note = fmt::format("{} expanded into the blocks they run", flat);
   return t;

@@ -18,6 +18,7 @@ struct TranslateTarget {
   /// Set for another dialect than the source's: the writer of the executed motion, whose
   /// result has the setup in its coordinates and runs without one.
   emit::MotionWriterMaker motionWriter = nullptr;
+  bool printSource = false; // the source printed back in its own dialect (gcx fmt)
 };
 
 /// The target, or nullopt with the reason in why (an unknown target, or a pair of dialects gcx

@@ -213,6 +213,9 @@ struct ControlFlow {
   /// A block whose axis words are no move (WL4 `G4 X2`, `G92 X0`): no modal call after it;
   /// null: every block with an axis word moves.
   std::function<bool(const ir::Block& flat)> axisWordsNoMove;
+  /// A return in the main program is this error (WL4 M99, wl4.md §6.7); null: it restarts
+  /// the main program or goes to its block P (NCT).
+  const char* returnInMainError = nullptr;
   /// Calls may nest this deep (WL4: 5, wl4.md §6.7); 0: as deep as the run's --max-depth.
   int maxCallDepth = 0;
   /// Whether a block number is a label a Jump statement may reach (WL4: written with a leading

@@ -38,6 +38,9 @@ struct Dialect {
   /// The encoding open() reads; empty: the dialect's own (lexicalRules().encoding). A command
   /// copies the registry's row and sets it from --encoding.
   std::optional<front::Encoding> encoding;
+  /// Translating to itself prints the program back (`gcx fmt`) with its variables, jumps, calls
+  /// and programs kept, instead of the expansion's flat blocks (WL4, docs/translation.md).
+  bool keepsStructureToItself = false;
 
   std::unique_ptr<BlockSource> open(std::istream& in, FileId file, diag::Engine& diags) const {
     return openSource(in, file, diags, encoding.value_or(lexicalRules().encoding));

@@ -48,6 +48,7 @@ enum class Setting : unsigned char {
   CompMergeDistance,    // mm: corner vectors closer than this on both axes are merged
   ModalLevelCycles,     // bit n: level drilling cycle 81+n repeats after each block with an axis
                         // word until it is cancelled
+  PowerOnGearRange,     // the spindle gear range M code in force before the program selects one
 };
 
 /// Where the setup holds a setting in this dialect.
@@ -72,6 +73,7 @@ enum class MAction : unsigned char {
   Coolant, // mist, flood, off: the code itself is the event's value
   ToolChange,
   Subprogram, // a call or return the expansion pass handles; reaching the machine is an error
+  GearRange,  // a spindle gear range (WL4 M41-M48): kept in the modal state, no event
 };
 
 /// When an M code acts relative to the motion of its block.
@@ -164,6 +166,9 @@ struct MachineRules {
   /// An arc by R is an error when R is 0, R is shorter than half the chord or the in-plane end
   /// point is missing (FMS-3000 §3.5), instead of NCT's tolerant readings.
   bool strictArcRadius = false;
+  /// An arc whose end radius differs from its start radius within the tolerance is a circle
+  /// about the programmed centre (WL4 §3.4), not NCT's spiral between the two radii.
+  bool arcWithinToleranceIsCircle = false;
   /// I J K only on arcs: in a G0/G1 block they are an error (FMS-3000 §3.4).
   bool centreWordsOnlyOnArcs = false;
   /// Reference returns go straight to their point, the axis values only naming the axes

@@ -109,6 +109,9 @@ enum class GAction : unsigned char {
                        // A the angle from the first plane axis (FMS G36, machine/pole_polar.cpp)
   CornerArc,           // radius compensation: an arc of the tool radius at the next outer corner
   VectorHold,          // radius compensation: the block ends with the vector it starts with
+  ThreadMotion,        // spindle-synchronised line, F the lead of the longest axis (WL4 G32)
+  ThreadReciprocating, // the same out, spindle reversed, back to the start (WL4 G33)
+  ProbeReturn,         // the block's move runs out and back to its start (WL4 G38)
 };
 
 struct GCodeSpec {

@@ -110,7 +110,7 @@ void CanonicalEmitter::event(const motion::Event& e) {
   case Kind::Arc: {
     feedMode(e);
     const motion::ArcGeometry arc(e);
-    if (isSpiral(arc)) {
+    if (isSpiral(arc) && !declaredCircle(e)) {
       for (const LinePoint& p : spiralLines(e, arc, opt_.chordTolerance))
         straight(e, "G1", p.at, p.extra, true);
       return;

@@ -11,6 +11,12 @@ namespace gcx::emit {
 
 /// True when the arc must be written as lines.
 bool isSpiral(const motion::ArcGeometry& arc);
+/// True when the arc's producer declares it a circle although its end is off the start radius
+/// within the dialect's arc tolerance (equal radii in the event, WL4 §3.4): canonical motion
+/// writes it as G2/G3 as programmed.
+inline bool declaredCircle(const motion::Event& e) {
+  return e.startRadius > 0 && e.startRadius == e.endRadius;
+}
 
 struct LinePoint {
   motion::Vec3 at;

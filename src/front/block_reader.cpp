@@ -67,6 +67,7 @@ void BlockReader::classifyForLexText() {
     if (asciiAlias_[c] >= 0) lexClasses_[c] = Alias;
   for (char c : rules_.lineCommentMarkers)
     lexClasses_[static_cast<unsigned char>(c)] = LineCommentMarker;
+  if (rules_.dotStartsMessage) lexClasses_['.'] = MessageDot;
   if (rules_.bracketComment) {
     lexClasses_[static_cast<unsigned char>(rules_.bracketComment->open)] = CommentOpen;
     lexClasses_[static_cast<unsigned char>(rules_.bracketComment->close)] = CommentClose;
@@ -253,6 +254,7 @@ void BlockReader::normalize(RawBlock& b) {
   std::string& t = b.lexText;
   bool comment = false;     // inside a bracket comment
   bool lineComment = false; // to the end of the block
+  bool message = false;     // a WL4 message: any character to the end of the block (§1.6)
   bool loneCr = false;      // a CR inside a block: the final one of CR LF is already gone
   if (!rules_.commentLineKeywords.empty()) {
     const std::size_t first = t.find_first_not_of(" \t");
@@ -266,11 +268,11 @@ void BlockReader::normalize(RawBlock& b) {
     const LexClass k = lexClasses_[uc];
     if (k == PlainText) continue; // the bulk of a program: nothing to do in any state
     if (k == NonAscii) {
-      normalizeNonAscii(b, i, comment || lineComment);
+      normalizeNonAscii(b, i, comment || lineComment || message);
       if (fatal_) return;
       continue;
     }
-    if (lineComment) continue;
+    if (lineComment || message) continue;
     if (comment) {
       if (k == CommentClose) comment = false;
       continue;
@@ -326,6 +328,16 @@ void BlockReader::normalize(RawBlock& b) {
       b.failed = true;
       t[i] = ' ';
       break;
+    case MessageDot: {
+      // a '.' beside a digit belongs to a number; elsewhere the parser reads a message from it
+      // where a word would start, and its text may be Cyrillic (wl4.md §1.6)
+      const auto digit = [&](std::size_t j) { return j < t.size() && t[j] >= '0' && t[j] <= '9'; };
+      if (!(i > 0 && digit(i - 1)) && !digit(i + 1)) {
+        message = true;
+        b.plain = false;
+      }
+      break;
+    }
     case OtherText:
     case PlainText:
     case NonAscii:

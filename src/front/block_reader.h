@@ -42,7 +42,8 @@ private:
     Alias,
     Blank, // tab, CR: read as a space
     Control,
-    NonAscii
+    NonAscii,
+    MessageDot // WL4: a '.' outside a number starts a message to the end of the line
   };
 
   void classifyForLexText();

@@ -174,6 +174,7 @@ void Interpreter::emit(motion::Event e) {
     return;
   }
   if (e.kind == Kind::Rapid || e.kind == Kind::Feed || e.kind == Kind::Arc) rememberPlaneMove(e);
+  if (probing_ && motion::isMotion(e)) probePath_.push_back(e); // G38 runs back along it
   // chamfers and roundings, then radius compensation, then the sink
   struct ToCompensation : motion::Sink {
     CompensationStage& comp;
@@ -326,8 +327,15 @@ bool Interpreter::executeBlock(const ir::Block& block) {
   const bool arcWithCentreOnly =
       (state_.motion == GAction::ArcCW || state_.motion == GAction::ArcCCW) &&
       (w.ijk[0] || w.ijk[1] || w.ijk[2] || (w.r && profile_.machine.strictArcRadius));
+  const ir::Word* probe = w.findAction(GAction::ProbeReturn);
+  const Vec3 probeFrom = program_;
+  if (probe) {
+    probing_ = true;
+    probePath_.clear();
+  }
   if (!consumed && (w.hasAxisWord() || arcWithCentreOnly || w.angle)) // ,A alone: a direction
     if (!move(w)) return false;
+  if (probe && !probeBack(*probe, probeFrom)) return false;
   if (pendingDwell_) {
     emitDwell(*pendingDwell_);
     pendingDwell_.reset();
@@ -343,6 +351,10 @@ bool Interpreter::setModal(const GCodeSpec& g) {
   case GAction::ArcCCW:
   case GAction::FilletCW:
   case GAction::FilletCCW:
+  case GAction::ThreadMotion:
+  case GAction::ThreadReciprocating:
+    if (g.action != GAction::ThreadMotion && g.action != GAction::ThreadReciprocating)
+      threadLead_.reset(); // a thread sequence ends with the next G0-G3 (wl4.md §3.6)
     state_.motion = g.action;
     if (state_.cycle == GAction::DrillCycle) cancelCycleMode(); // like G80 (000:9479-9480)
     return true;
@@ -467,7 +479,8 @@ bool Interpreter::applyModal(const BlockWords& w) {
     case GAction::OneSidedPositioning: // move()
     case GAction::ImplicitPlus:
     case GAction::ImplicitMinus:
-      break; // applyNonMotion
+    case GAction::ProbeReturn: // probeBack() after the move
+      break;                   // applyNonMotion
     case GAction::RadiusCompLeft:
     case GAction::RadiusCompRight:
       state_.radiusComp = g->action; // radiusCompensation() starts the stage
@@ -999,6 +1012,9 @@ bool Interpreter::move(const BlockWords& w) {
   case GAction::FilletCW:
   case GAction::FilletCCW:
     return fillet(to, extraTo);
+  case GAction::ThreadMotion:
+  case GAction::ThreadReciprocating:
+    return threadMove(w, to, extraTo);
   case GAction::TurningCycle:
     return turningCycle(static_cast<cycles::TurningCycle>(turningMode_->arg), w);
   default:
@@ -1194,7 +1210,7 @@ bool Interpreter::arcTo(const Vec3& end, const Vec3& centre, bool cw, int turns,
   e.clockwise = cw != mirrored;
   e.turns = turns - 1;
   e.startRadius = r0 * k;
-  e.endRadius = r1 * k;
+  e.endRadius = profile_.machine.arcWithinToleranceIsCircle ? e.startRadius : r1 * k;
   e.feed = feed;
   e.perRevolution = state_.perRevolution;
   machine_ = e.end;
@@ -1288,9 +1304,13 @@ bool Interpreter::mcodes(const BlockWords& w, MTiming timing) {
       e.value = state_.tool;
       break;
     case MAction::Coolant:
+      state_.coolant = code;
       e.kind = Kind::Coolant;
       e.value = code;
       break;
+    case MAction::GearRange:
+      state_.gearRange = code;
+      continue;
     case MAction::Stop:
     case MAction::OptionalStop:
       e.kind = Kind::Stop;

@@ -69,6 +69,8 @@ struct ModalState {
   int spindleDirection = 0;  // +1 M3, -1 M4, 0 M5
   int selectedTool = 0;      // T
   int tool = 0;              // in the spindle after M6
+  int coolant = 9;           // the last coolant code (M7, M8, M9)
+  int gearRange = 0;         // the last gear range M code (WL4 M41-M48), 0 before one
   std::string planeAxes;     // the plane's axes when parallel axes form it ("UV"), else empty
   bool surfaceSpeed = false; // G96: S is a surface speed (m/min or ft/min)
   double surfaceSpeedValue = 0;
@@ -149,6 +151,13 @@ public:
     if (g) setModalCode(g->group, g->code10);
   }
   const Setup& setup() const { return setup_; }
+  /// The last probing move's end (WL4 G38 without a probe model: its end point).
+  struct ProbeResult {
+    Vec3 machine = Vec3::Zero();  // machine coordinates
+    Vec3 work = Vec3::Zero();     // the active work system, tool offsets included
+    Vec3 distance = Vec3::Zero(); // from the block's start
+  };
+  const ProbeResult& probeResult() const { return probe_; }
   const Profile& profile() const { return profile_; }
   /// Active length offset (signed, mm) and the G92 / G52 shifts.
   double lengthOffset() const { return offsets_.length; }
@@ -215,6 +224,10 @@ private:
   /// A quarter-circle fillet to `end` (fillet.cpp): the centre is the corner of the quadrant
   /// the two points bound that gives the programmed direction (wl4.md §3.5).
   bool fillet(const Vec3& end, const motion::Extra& extraEnd);
+  /// After a WL4 G38 block's move: the results, and the same path back (probe_move.cpp).
+  bool probeBack(const ir::Word& code, const Vec3& from);
+  /// A WL4 G32/G33 thread move to `to` (thread_motion.cpp, wl4.md §3.6).
+  bool threadMove(const BlockWords& w, const Vec3& to, const motion::Extra& extraTo);
   /// The arc from the current position about `centre` (program coordinates) to `end`.
   bool arcTo(const Vec3& end, const Vec3& centre, bool cw, int turns, const motion::Extra& extraEnd,
              double feed);
@@ -323,6 +336,10 @@ private:
   Offsets offsets_;
   Transforms transforms_;
   Vec3 program_ = Vec3::Zero();
+  std::optional<double> threadLead_;     // the lead of the running G32/G33 sequence
+  bool probing_ = false;                 // a G38 block's move: its events are kept
+  std::vector<motion::Event> probePath_; // to run back along
+  ProbeResult probe_;
   Vec3 machine_ = Vec3::Zero();
   motion::Extra extra_ = motion::Extra::Zero(); // A B C (continuous, degrees), U V W (mm)
   unsigned parallelAxes_ = 0; // bit i: U/V/W is an axis parallel to X/Y/Z (a setting)

@@ -167,6 +167,25 @@ TEST(Wl4Syntax_7, Example24_MessagesOfTheSystemProgram) {
             (V{"N010 M0 N10 .ERROR > UNKNOWN CYCLE IN RANGE G70-G79", ".********* G31 ********"}));
 }
 
+TEST(Wl4Syntax_1_6, AMessageMayBeCyrillicAndADotInANumberIsNone) {
+  // ".Ошибка в программе" in KOI8-R (lower case is allowed in a message) after a word and alone,
+  // through both parsing paths
+  const std::string koi8 =
+      "G0 X1.5 .\xef\xdb\xc9\xc2\xcb\xc1 \xd7 \xd0\xd2\xcf\xc7\xd2\xc1\xcd\xcd\xc5\n"
+      "M0 .\xf3\xf4\xef\xf0\n";
+  for (bool fast : {true, false}) {
+    Parsed p = parseWl4(koi8, front::Encoding::Koi8R, fast);
+    ASSERT_TRUE(p.errors().empty()) << p.rendered();
+    ASSERT_EQ(p.blocks[0].comments.size(), 1u);
+    EXPECT_EQ(p.blocks[0].comments[0].text,
+              "\u041E\u0448\u0438\u0431\u043A\u0430 \u0432 "
+              "\u043F\u0440\u043E\u0433\u0440\u0430\u043C\u043C\u0435");
+    EXPECT_EQ(printedWl4(p)[1], "M0 .\u0421\u0422\u041E\u041F");
+  }
+  // outside a message Cyrillic is still an error
+  EXPECT_EQ(parseWl4("G0 X1 \xef\n", front::Encoding::Koi8R).errors(), (V{"1:7 2064"}));
+}
+
 // ---------------------------------------------------------------- §6.3 precedence
 
 TEST(Wl4Syntax_6_3, TwoLevelsLeftToRight) {

@@ -90,7 +90,7 @@ TEST(SetupDialects, OtherSectionsAreCheckedByTheirOwnSyntax) {
   EXPECT_EQ(r.errors(),
             (std::vector<std::string>{
                 "1:25 GCX023 \"N1339\" is not a parameter; wl4 parameters are \"arc_tolerance\", "
-                "\"b_chamfer\"",
+                "\"lathe\", \"gear_range\", \"b_chamfer\"",
                 "1:38 GCX021 unknown key \"feed\" in the wl4 section; the keys are parameters, "
                 "variables",
                 "2:12 GCX022 the fms3000 section must be an object {...}, not an array"}));
@@ -138,7 +138,8 @@ TEST(SetupDialects, SyntaxIsTheProfilesData) {
   EXPECT_FALSE(fms->isWorkOffset("G54.1 P1"));
   EXPECT_EQ(d.find("wl4")->presetVariables, (std::vector<std::pair<int, int>>{{1, 29}, {30, 99}}));
   EXPECT_EQ(d.find("wl4")->namedParameters,
-            (std::vector<std::string>{"arc_tolerance", "b_chamfer"})); // settings, B's role
+            (std::vector<std::string>{"arc_tolerance", "lathe", "gear_range",
+                                      "b_chamfer"})); // settings, B's role
   EXPECT_FALSE(cli::setupDialects("").own);
 }
 

@@ -1,0 +1,45 @@
+// The WL4 probing move G38 (wl4.md §3.8): a G0-G3 block that runs toward its end point and
+// back to its start along the same path; a touch would end the outbound move early. gcx has no
+// probe model, so it takes the spec's static reading: no touch, the move runs to its end point
+// and back (a warning says so), and the results #1000-#1027 hold that end point. The canonical
+// output writes the two moves as they are: LinuxCNC's G38.2 would stop with an error without a
+// touch, so it cannot say "no touch" (docs/wl4.md).
+#include <fmt/format.h>
+
+#include "diag/codes.h"
+#include "machine/interpreter.h"
+#include "motion/geometry.h"
+
+namespace gcx::machine {
+
+bool Interpreter::probeBack(const ir::Word& code, const Vec3& from) {
+  probing_ = false;
+  if (probePath_.empty()) return true; // no motion, nothing to probe
+  diags_.warning(diag::code::Wl4ProbeWithoutTouch, code.range,
+                 "G38: gcx has no probe model and assumes no touch (wl4.md §3.8): the move runs "
+                 "to its end point and back, and #1000-#1027 hold the end point");
+  probe_.machine = machine_;
+  probe_.work = program_;
+  probe_.distance = program_ - from;
+  const motion::PlaneAxes ax = motion::axesOf(state_.plane);
+  std::vector<motion::Event> path = std::move(probePath_);
+  probePath_.clear();
+  for (auto it = path.rbegin(); it != path.rend(); ++it) {
+    motion::Event back = *it;
+    std::swap(back.start, back.end);
+    std::swap(back.extraStart, back.extraEnd);
+    if (back.kind == motion::Kind::Arc) {
+      std::swap(back.startRadius, back.endRadius);
+      back.clockwise = !back.clockwise;
+      back.center[ax.normal] = back.start[ax.normal]; // the centre at the new start's height
+    }
+    machine_ = back.end;
+    extra_ = back.extraEnd;
+    emit(std::move(back));
+    if (stopped_) return false;
+  }
+  program_ = from;
+  return true;
+}
+
+} // namespace gcx::machine

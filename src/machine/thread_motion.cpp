@@ -1,0 +1,54 @@
+// Spindle-synchronised thread moves (WL4 G32 and G33, wl4.md §3.6). F is the lead along the
+// axis with the longest travel, taken when the sequence of thread blocks starts (a new F in a
+// later block acts after it). The canonical output says a thread as LinuxCNC's G33 K: a
+// constant lead along Z from the spindle's index, so the event carries the lead along Z, and a
+// phase P, a lead change I or a thread without Z travel is a located error, never a guess.
+// G33 runs to the end point, reverses the spindle, returns to the start on the same lead and
+// restores the spindle's direction.
+#include <cmath>
+#include <fmt/format.h>
+
+#include "diag/codes.h"
+#include "emit/number.h"
+#include "machine/interpreter.h"
+
+namespace gcx::machine {
+
+bool Interpreter::threadMove(const BlockWords& w, const Vec3& to, const motion::Extra& extraTo) {
+  const char* code = state_.motion == GAction::ThreadReciprocating ? "G33" : "G32";
+  if (!threadLead_) {
+    for (const ir::Word* word : {w.p, w.ijk[0]})
+      if (word && word->number != 0)
+        return fail(diag::code::Wl4ThreadNotExpressible, word->range,
+                    fmt::format("{} {}{}: the canonical output's thread (G33 K) has no {}", code,
+                                word->address, emit::formatNumber(word->number),
+                                word == w.p ? "spindle phase" : "lead change per revolution"));
+    if (state_.feed <= 0)
+      return fail(diag::code::MissingData, blockRange_, fmt::format("{} without its lead F", code));
+    threadLead_ = state_.feed;
+  }
+  const Vec3 start = machine_, end = toMachine(to), from = program_;
+  const Vec3 travel = (end - start).cwiseAbs();
+  if (travel.maxCoeff() < 1e-9) return true;
+  if (travel.z() < 1e-9)
+    return fail(diag::code::Wl4ThreadNotExpressible, blockRange_,
+                fmt::format("{} without travel along Z: the canonical output's thread (G33 K) "
+                            "leads along Z only",
+                            code));
+  // F leads the longest axis; along Z the same revolutions cover |dZ|
+  const double leadZ = *threadLead_ * travel.z() / travel.maxCoeff();
+  const motion::Extra extraFrom = extra_;
+  emitLine(motion::Kind::Feed, end, extraTo, leadZ, leadZ);
+  program_ = to;
+  if (state_.motion != GAction::ThreadReciprocating) return true;
+  const int direction = state_.spindleDirection;
+  state_.spindleDirection = -direction;
+  emitSpindle();
+  emitLine(motion::Kind::Feed, start, extraFrom, leadZ, leadZ);
+  state_.spindleDirection = direction;
+  emitSpindle();
+  program_ = from;
+  return true;
+}
+
+} // namespace gcx::machine
