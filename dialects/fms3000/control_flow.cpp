@@ -54,6 +54,7 @@ const ControlFlow& controlFlow() {
     f.remaps = remapTable();
     f.hasVariables = false; // no #-variables in the manual; user cycles are refused (FMSX01)
     f.expansionMarkers = {"P", "M98", "M99", "GG", "G25", "M25"};
+    f.returnInMainEnds = true; // a subprogram run on its own ends at its M99 (§2.2)
     // a unit is the file named by its digits beside the caller: "019" -> 019.fms (§1.3)
     f.programFiles = [](const std::string& unit, const std::string& ext) {
       return std::vector<std::string>{unit + (ext.empty() ? std::string(".fms") : ext)};

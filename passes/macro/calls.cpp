@@ -168,6 +168,11 @@ bool Expander::returnFromCall(Frame& f, const ir::Block& flat, const CodeMatch& 
     return fail(
         flow_.returnInMainError, m.code->range,
         fmt::format("{} in the main program: there is no call to return from", codeText(*m.code)));
+  if (stack_.size() == 1 && flow_.returnInMainEnds) {
+    machine_.finish();
+    done_ = true;
+    return true;
+  }
   if (stack_.size() == 1) {
     // a return in the main program: back to its start or to the block P (§5.2 R6), endlessly
     if (++jumps_ > limits_.maxJumps)

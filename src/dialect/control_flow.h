@@ -216,6 +216,9 @@ struct ControlFlow {
   /// A return in the main program is this error (WL4 M99, wl4.md §6.7); null: it restarts
   /// the main program or goes to its block P (NCT).
   const char* returnInMainError = nullptr;
+  /// A return in the main program ends it like the end of its file (FMS-3000 M99: "run
+  /// standalone, it acts like M02 without machine signals", fms3000.md §2.2, 001:336-340).
+  bool returnInMainEnds = false;
   /// Calls may nest this deep (WL4: 5, wl4.md §6.7); 0: as deep as the run's --max-depth.
   int maxCallDepth = 0;
   /// Whether a block number is a label a Jump statement may reach (WL4: written with a leading

@@ -321,6 +321,13 @@ TEST(Fms3000Vectors_8, T24_P19AndP019AreDifferentPrograms) {
   EXPECT_EQ(r.motion(), (V{"L 1,0,0 F100", "L 1,1,0 F100", "END"}));
 }
 
+TEST(Fms3000Calls_2_2, M99RunStandaloneEndsTheProgram) {
+  // a unit written as a subprogram, run on its own: its M99 acts like M02, it does not loop
+  const MacroRun r = runFms({{"main.fms", "G91G1X1F100\r\nM99\r\nG1Y1\r\n"}}, s0());
+  ASSERT_EQ(r.errors, V{}) << r.rendered;
+  EXPECT_EQ(r.motion(), (V{"L 1,0,0 F100", "END"}));
+}
+
 // The lathe vectors run under G18 with X along slot 0; the motion is in machine coordinates,
 // so a diameter-programmed X (N7006 = 1) shows as its radius: X94 is 47.
 machine::Setup diameterX() {
