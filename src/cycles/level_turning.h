@@ -1,11 +1,13 @@
 // The FMS-3000 turning cycles whose parameters follow the code (fms3000.md §5.3, cycles.md
-// appendix A.5), on the lathe axes X (slot 0, as radius) and Z (slot 2): G150 single-pass
-// longitudinal turning, G154/G160 drilling along Z (the G83/G86 sequences of the level drilling
-// cycles, then the final X), G166 chamfer and G167 fillet. A pure function of its inputs: the
+// appendix A.5), on the lathe axes X (slot 0, as radius) and Z (slot 2): G150/G151 single-pass
+// turning and facing, G154-G157/G160/G161 drilling along Z and grooving along X (the G83/G86
+// sequences of the level drilling cycles, then the final position), G158/G159 grooves, G166
+// chamfer and G167 fillet. A pure function of its inputs: the
 // ops from the cycle's start point (И.Т.), in program coordinates.
 #pragma once
 #include <map>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -24,6 +26,9 @@ struct LevelTurnRequest {
   double feed = 0;                  // F when not among the words
   double dwellSecondsPerUnit = 0.1; // E
 };
+
+/// The parameters of `cycle` measured along X: diameters when X is programmed as a diameter.
+std::string_view diameterWords(int cycle);
 
 /// The ops, or the message of a missing, extra or bad parameter. Zero-length moves are left out.
 std::variant<std::vector<CycleOp>, std::string> expandLevelTurning(const LevelTurnRequest& req);

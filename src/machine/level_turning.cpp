@@ -23,9 +23,8 @@ bool Interpreter::levelTurning(const SourceRange& code) {
   req.words = levelWords_;
   // X-type parameters follow the diameter setting; R of G166/G167 is always a radius
   if (state_.diameterAxes & 1u)
-    for (char c : {'X', 'Q'})
-      if (auto it = req.words.find(c); it != req.words.end() && (c == 'X' || levelCycle_ == 150))
-        it->second /= 2;
+    for (char c : cycles::diameterWords(levelCycle_))
+      if (auto it = req.words.find(c); it != req.words.end()) it->second /= 2;
   req.rapidFlag = levelRapidFlag_;
   req.modalRapid = state_.motion == GAction::Rapid;
   req.feed = state_.feed;
