@@ -31,6 +31,8 @@ constexpr CycleWords kWords[] = {
     {159, "XZQ", "XZQF"},
     {160, "UZVW", "UZVWIFEX"},
     {161, "UXVW", "UXVWIFEZ"},
+    {164, "Q", "QVWFDP"},
+    {165, "Q", "QVWFDP"},
     {166, "R", "XZR"},
     {167, "R", "XZR"},
 };
@@ -152,6 +154,10 @@ std::string_view diameterWords(int cycle) {
   case 157:
   case 161:
     return "UXVWIQ"; // every length along X (001:2998-2999, 3058-3059)
+  case 164:
+    return "QD"; // 001:3279-3280
+  case 165:
+    return "VW"; // 001:3370-3371
   default:
     return "X";
   }
@@ -178,6 +184,9 @@ std::variant<std::vector<CycleOp>, std::string> expandLevelTurning(const LevelTu
   case 158:
   case 159:
     return grooves(req, feed);
+  case 164:
+  case 165:
+    return profileRoughing(req, feed);
   case 166:
   case 167:
     return chamferOrFillet(req, feed);

@@ -66,5 +66,7 @@ inline double position(const LevelTurnRequest& req, char c, double origin) {
 Result singlePassFacing(const LevelTurnRequest& req, double feed);
 /// G158 cylindrical / G159 face grooves (Tables 27, 28).
 Result grooves(const LevelTurnRequest& req, double feed);
+/// G164 longitudinal / G165 facing roughing to the profile req.profile (Tables 33, 34).
+Result profileRoughing(const LevelTurnRequest& req, double feed);
 
 } // namespace gcx::cycles::level

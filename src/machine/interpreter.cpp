@@ -257,6 +257,7 @@ bool Interpreter::execute(const ir::Block& block, const motion::Provenance& from
   blockRange_ = block.range;
   blockMoves_ = 0;
   ++blockSerial_;
+  if (pendingProfile_) return profileBlock(block, from) && !stopped_;
   return executeBlock(block) && !stopped_;
 }
 
@@ -1358,6 +1359,11 @@ void Interpreter::message(const std::string& text, const motion::Provenance& fro
 
 void Interpreter::finish() {
   if (ended_) return;
+  if (pendingProfile_) { // G164/G165 whose profile never ended
+    fail(diag::code::FmsProfile, pendingProfile_->code,
+         "the profile after this cycle has no `endcont` line (001:3255-3259)");
+    return;
+  }
   if (directionLine_) { // a line by ,A alone never met the line that ends it (nct.md §4.3)
     fail(diag::code::IntersectionElement, blockRange_,
          "the program ends after a line given by its direction alone (,A): no over-determined "

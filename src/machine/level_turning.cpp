@@ -12,7 +12,7 @@
 
 namespace gcx::machine {
 
-bool Interpreter::levelTurning(const SourceRange& code) {
+bool Interpreter::levelTurning(const SourceRange& code, const cycles::Profile* profile) {
   if (levelCycle_ == 167 && state_.plane != motion::Plane::ZX)
     return fail(diag::code::FmsCycleParameters, code,
                 "G167 turns its fillet in the lathe plane: G18 first (fms3000.md §5.3.2)");
@@ -29,6 +29,7 @@ bool Interpreter::levelTurning(const SourceRange& code) {
   req.modalRapid = state_.motion == GAction::Rapid;
   req.feed = state_.feed;
   req.dwellSecondsPerUnit = profile_.machine.dwell.secondsPerUnit;
+  req.profile = profile;
   if (auto f = levelWords_.find('F'); f != levelWords_.end()) state_.feed = f->second;
   const auto ops = cycles::expandLevelTurning(req);
   if (const std::string* why = std::get_if<std::string>(&ops))

@@ -94,6 +94,43 @@ TEST(Fms3000Turning_5_3, G161ChipBreakingGroovingAlongX_Table30) {
                "R 15,0,-10", "L 10,0,-10 F50", "R 22,0,-10", "R 26,0,-10"}));
 }
 
+TEST(Fms3000Turning_5_3_1, G164ChipBreakingThenTheFinishingPass_Table33) {
+  // levels at F without the G0 flag; V6 W1 cut each level as G86 steps; without P the
+  // finishing pass runs the approach block and the profile, then rapid X and Z back to И.Т.
+  EXPECT_EQ(run("G18 G90 G0 X20 Z2\nG164 Q4 V6 W1 F100\nG1 Z-20\nX12 Z-10\nX8 Z0\nendcont\nM30\n"),
+            (V{"R 20,0,2", "L 16,0,2 F100", "L 16,0,-4 F100", "R 16,0,-3", "L 16,0,-10 F100",
+               "R 16,0,-9", "L 16,0,-15 F100", "R 16,0,2", "L 12,0,2 F100", "L 12,0,-4 F100",
+               "R 12,0,-3", "L 12,0,-10 F100", "R 12,0,2", "R 20,0,2", "L 20,0,-20 F100",
+               "L 12,0,-10 F100", "L 8,0,0 F100", "R 20,0,0", "R 20,0,2"}));
+}
+
+TEST(Fms3000Turning_5_3_1, G165FacingRoughing_Table34) {
+  // depth levels along Z 1 apart, cuts along X to the profile, D retracts along Z
+  EXPECT_EQ(run("G18 G0 X20 Z2\nG165 Q1 F100 G0 D0.5 P1\nG1 X10\nG1 X5 Z-2\nendcont\nM30\n"),
+            (V{"R 20,0,2", "R 20,0,1", "L 8.75,0,1 F100", "R 8.75,0,1.5", "R 20,0,1.5", "R 20,0,0",
+               "L 7.5,0,0 F100", "R 7.5,0,0.5", "R 20,0,0.5", "R 20,0,-1", "L 6.25,0,-1 F100",
+               "R 6.25,0,-0.5", "R 20,0,-0.5", "R 20,0,2"}));
+}
+
+TEST(Fms3000Turning_5_3_1, BadProfilesAreLocatedErrors) {
+  const std::string head = "G18 G0 X20 Z2\nG164 Q4 F100\n";
+  // the approach block must move Z only (001:3916)
+  EXPECT_EQ(errorsOf(head + "G1 X18 Z-20\nX8 Z0\nendcont\nM30\n"), V{"main.fms:3:1 FMSX05"});
+  // not monotonic along X (001:3975)
+  EXPECT_EQ(errorsOf(head + "G1 Z-20\nX12 Z-10\nX14 Z-5\nendcont\nM30\n"),
+            V{"main.fms:5:1 FMSX05"});
+  // a word the profile may not hold (001:3903-3909)
+  EXPECT_EQ(errorsOf(head + "G1 Z-20\nX12 Z-10 M3\nendcont\nM30\n"), V{"main.fms:4:10 FMSX05"});
+  EXPECT_EQ(errorsOf(head + "G1 Z-20\nG0 X12 Z-10\nendcont\nM30\n"), V{"main.fms:4:1 FMSX05"});
+  // no endcont before the end of the file
+  EXPECT_EQ(errorsOf(head + "G1 Z-20\nX12 Z-10\n"), V{"main.fms:2:1 FMSX05"});
+  // V without W (001:3950-3953), and the lathe plane
+  EXPECT_EQ(errorsOf("G18 G0 X20 Z2\nG164 Q4 V2 F100\nG1 Z-20\nX8 Z0\nendcont\n"),
+            V{"main.fms:2:1 FMSX02"});
+  EXPECT_EQ(errorsOf("G0 X20 Z2\nG164 Q4 F100\nG1 Z-20\nX8 Z0\nendcont\n"),
+            V{"main.fms:2:1 FMSX02"});
+}
+
 TEST(Fms3000Turning_5_3, BadParametersOfTheNewCyclesAreLocatedErrors) {
   EXPECT_EQ(errorsOf("G18\nG151 X0 Z0 P1 F100\n"), V{"main.fms:2:1 FMSX02"});  // P without Q
   EXPECT_EQ(errorsOf("G18\nG155 U22 X10 V4 F50\n"), V{"main.fms:2:1 FMSX02"}); // no W
