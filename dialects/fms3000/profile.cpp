@@ -139,7 +139,7 @@ std::vector<GCodeSpec> gcodes() {
       {1600, 13, "chip-breaking drilling along Z", A::LevelDrillCycle, 160},
       {1610, 13, "chip-breaking grooving along X", A::LevelDrillCycle, 161},
       {1620, 13, "multi-pass thread"},
-      {1630, 13, "tap or die"},
+      {1630, 13, "tap or die", A::LevelDrillCycle, 163},
       {1640, 13, "longitudinal roughing to a profile", A::LevelDrillCycle, 164},
       {1650, 13, "facing roughing to a profile", A::LevelDrillCycle, 165},
       {1660, 0, "chamfer", A::LevelDrillCycle, 166},

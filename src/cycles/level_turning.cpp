@@ -31,6 +31,7 @@ constexpr CycleWords kWords[] = {
     {159, "XZQ", "XZQF"},
     {160, "UZVW", "UZVWIFEX"},
     {161, "UXVW", "UXVWIFEZ"},
+    {163, "Z", "ZFXMI"},
     {164, "Q", "QVWFDP"},
     {165, "Q", "QVWFDP"},
     {166, "R", "XZR"},
@@ -184,6 +185,8 @@ std::variant<std::vector<CycleOp>, std::string> expandLevelTurning(const LevelTu
   case 158:
   case 159:
     return grooves(req, feed);
+  case 163:
+    return tapping(req, feed);
   case 164:
   case 165:
     return profileRoughing(req, feed);

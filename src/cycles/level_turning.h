@@ -2,8 +2,8 @@
 // appendix A.5), on the lathe axes X (slot 0, as radius) and Z (slot 2): G150/G151 single-pass
 // turning and facing, G154-G157/G160/G161 drilling along Z and grooving along X (the G83/G86
 // sequences of the level drilling cycles, then the final position), G158/G159 grooves,
-// G164/G165 roughing to a profile, G166 chamfer and G167 fillet. A pure function of its inputs: the
-// ops from the cycle's start point (И.Т.), in program coordinates.
+// G163 tapping, G164/G165 roughing to a profile, G166 chamfer and G167 fillet. A pure function of
+// its inputs: the ops from the cycle's start point (И.Т.), in program coordinates.
 #pragma once
 #include <map>
 #include <optional>
@@ -27,6 +27,7 @@ struct LevelTurnRequest {
   bool modalRapid = false;          // G166/G167: the straight part under G0 (else G1)
   double feed = 0;                  // F when not among the words
   double dwellSecondsPerUnit = 0.1; // E
+  int spindleDirection = 0;         // G163: +1 M3, -1 M4, 0 stopped (the direction it reverses)
   /// G164/G165: the approach block and the profile up to `endcont`, traced (contour.h).
   const Profile* profile = nullptr;
 };

@@ -47,6 +47,21 @@ public:
     ops_.push_back(op);
     at_ = op.to;
   }
+  /// A spindle event (or any op without motion) where the path is.
+  void event(OpKind kind) {
+    CycleOp op;
+    op.kind = kind;
+    op.to = at_;
+    ops_.push_back(op);
+  }
+  /// A spindle-synchronised move along Z with `lead` mm per revolution.
+  void thread(double z, double lead) {
+    Vec3 p = at_;
+    p[kZ] = z;
+    const std::size_t before = ops_.size();
+    appendMove(ops_, at_, OpKind::Thread, p);
+    if (ops_.size() > before) ops_.back().value = lead;
+  }
   const Vec3& at() const { return at_; }
   double x() const { return at_[kX]; }
   double z() const { return at_[kZ]; }
@@ -66,6 +81,8 @@ inline double position(const LevelTurnRequest& req, char c, double origin) {
 Result singlePassFacing(const LevelTurnRequest& req, double feed);
 /// G158 cylindrical / G159 face grooves (Tables 27, 28).
 Result grooves(const LevelTurnRequest& req, double feed);
+/// G163 tap or die (Table 32).
+Result tapping(const LevelTurnRequest& req, double feed);
 /// G164 longitudinal / G165 facing roughing to the profile req.profile (Tables 33, 34).
 Result profileRoughing(const LevelTurnRequest& req, double feed);
 

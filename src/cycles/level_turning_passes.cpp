@@ -1,4 +1,5 @@
-// FMS-3000 G151 single-pass facing and G158/G159 grooves (fms3000.md §5.3, Tables 20, 27, 28):
+// FMS-3000 G151 single-pass facing, G158/G159 grooves and G163 tapping (fms3000.md §5.3,
+// Tables 20, 27, 28, 32):
 // reconstructions [R] of the spec, unverified against the control.
 #include <cmath>
 #include <fmt/format.h>
@@ -57,6 +58,31 @@ Result grooves(const LevelTurnRequest& req, double feed) {
     path.along(deep, OpKind::Rapid, out);
     if (end) break;
   }
+  return path.take();
+}
+
+// G163 (Table 32, 001:3201-3240) [R]: a spindle-synchronised feed along Z to Z at F mm per
+// revolution, the spindle reversed (through a stop when M5 is written), the synchronised feed
+// back to z0, the spindle's first direction again, then rapid to X when given. I (sync with the
+// zero mark before the Z move) changes no motion: a synchronised move starts on the mark.
+Result tapping(const LevelTurnRequest& req, double feed) {
+  if (const auto m = req.words.find('M'); m != req.words.end() && m->second != 5)
+    return std::string("G163: M5 is its only M (a stop before the reverse)");
+  if (feed <= 0) return std::string("G163 needs the thread pitch F > 0 (mm per revolution)");
+  if (req.spindleDirection == 0)
+    return std::string("G163 taps with the spindle turning: M03 or M04 first");
+  const double z0 = req.position[kZ];
+  const bool stop = req.words.count('M') != 0;
+  Path path(req.position);
+  const auto reverse = [&](int direction) {
+    if (stop) path.event(OpKind::SpindleStop);
+    path.event(direction > 0 ? OpKind::SpindleCW : OpKind::SpindleCCW);
+  };
+  path.thread(position(req, 'Z', z0), feed);
+  reverse(-req.spindleDirection);
+  path.thread(z0, feed);
+  reverse(req.spindleDirection);
+  if (req.words.count('X')) path.along(kX, OpKind::Rapid, position(req, 'X', req.position[kX]));
   return path.take();
 }
 

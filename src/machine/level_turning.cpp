@@ -30,6 +30,7 @@ bool Interpreter::levelTurning(const SourceRange& code, const cycles::Profile* p
   req.feed = state_.feed;
   req.dwellSecondsPerUnit = profile_.machine.dwell.secondsPerUnit;
   req.profile = profile;
+  req.spindleDirection = state_.spindleDirection;
   if (auto f = levelWords_.find('F'); f != levelWords_.end()) state_.feed = f->second;
   const auto ops = cycles::expandLevelTurning(req);
   if (const std::string* why = std::get_if<std::string>(&ops))

@@ -94,6 +94,23 @@ TEST(Fms3000Turning_5_3, G161ChipBreakingGroovingAlongX_Table30) {
                "R 15,0,-10", "L 10,0,-10 F50", "R 22,0,-10", "R 26,0,-10"}));
 }
 
+TEST(Fms3000Turning_5_3, G163TapOrDie_Table32) {
+  const MacroRun r = runFms("G18 G0 X0 Z5\nM3 S500\nG163 Z-20 F1.5 X10\nM30\n");
+  ASSERT_EQ(r.errors, V{}) << r.rendered;
+  EXPECT_EQ(r.motion(), (V{"R 0,0,5", "EV S500 M3", "L 0,0,-20 F1.5", "EV S500 M4", "L 0,0,5 F1.5",
+                           "EV S500 M3", "R 10,0,5", "END"}));
+  int synchronised = 0; // both Z moves follow the spindle at 1.5 mm per revolution
+  for (const motion::Event& e : r.events)
+    synchronised += e.kind == motion::Kind::Feed && e.lead == 1.5;
+  EXPECT_EQ(synchronised, 2);
+  // M5: a stop before each reverse; G91: Z from И.Т.; I (sync) moves nothing
+  EXPECT_EQ(run("G18 G0 X0 Z5\nM4 S300\nG91 G163 Z-10 F2 M5 I1\nM30\n"),
+            (V{"R 0,0,5", "EV S300 M4", "L 0,0,-5 F2", "EV S300 M5", "EV S300 M3", "L 0,0,5 F2",
+               "EV S300 M5", "EV S300 M4"}));
+  EXPECT_EQ(errorsOf("G18\nG163 Z-20 F1.5\n"), V{"main.fms:2:1 FMSX02"});           // spindle off
+  EXPECT_EQ(errorsOf("G18\nM3 S100\nG163 Z-20 F1 M3\n"), V{"main.fms:3:1 FMSX02"}); // M3
+}
+
 TEST(Fms3000Turning_5_3_1, G164ChipBreakingThenTheFinishingPass_Table33) {
   // levels at F without the G0 flag; V6 W1 cut each level as G86 steps; without P the
   // finishing pass runs the approach block and the profile, then rapid X and Z back to И.Т.
