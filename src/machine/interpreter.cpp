@@ -635,11 +635,12 @@ bool Interpreter::applyNonMotion(const BlockWords& w, bool& consumed) {
   }
   if (const ir::Word* g = w.findAction(GAction::SetCoordinates)) {
     consumed = true;
-    if (const double mode = setting(profile_, setup_, Setting::SetCoordinatesMode); mode != 0)
-      return fail(diag::code::NotImplemented, g->range,
-                  fmt::format("{} with {} = {} is not implemented yet", gName(*g),
+    const double mode = setting(profile_, setup_, Setting::SetCoordinatesMode);
+    if (mode != 0 && mode != 1 && mode != 2)
+      return fail(diag::code::DataOutOfRange, g->range,
+                  fmt::format("{} = {} gives {} no meaning (0, 1 or 2)",
                               settingLabel(profile_, Setting::SetCoordinatesMode),
-                              emit::formatNumber(mode)));
+                              emit::formatNumber(mode), gName(*g)));
     if (w.s && profile_.machine.setCoordinatesSIsSpindleLimit) { // nct.md §3.18
       if (w.hasAxisWord())
         return fail(diag::code::ForbiddenAddress, w.s->range,
@@ -647,7 +648,7 @@ bool Interpreter::applyNonMotion(const BlockWords& w, bool& consumed) {
       state_.maxSpindleSpeed = w.s->number;
       return true;
     }
-    return setCoordinates(w);
+    return mode == 0 ? setCoordinates(w) : setCoordinateOrigin(w, mode == 2);
   }
   if (w.has(GAction::LocalCoordinates)) {
     consumed = true;

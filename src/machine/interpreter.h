@@ -233,6 +233,10 @@ private:
   Vec3 target(const BlockWords& w, bool allowPolar) const;
   bool axisGiven(const BlockWords& w, int axis) const { return w.axis[axis] || w.uvw[axis]; }
   bool setCoordinates(const BlockWords& w);
+  /// The other meanings of the set-coordinates words (Setting::SetCoordinatesMode 1, 2):
+  /// the new origin in machine coordinates, or a shift of the current origin that adds up
+  /// (machine/coordinate_origin.cpp).
+  bool setCoordinateOrigin(const BlockWords& w, bool additive);
   bool localCoordinates(const BlockWords& w);
   bool dataInput(const BlockWords& w, const ir::Block& b);
   bool oneSidedRapid(const BlockWords& w, const Vec3& to, const motion::Extra& extraTo);
