@@ -13,7 +13,8 @@ std::vector<SettingSpec> settings() {
       {S::ArcRadiusTolerance, "N3020", nullptr, 0.001, "N3020"},
       // N3021: I/J/K incremental (0), absolute (1), or following G90/G91 (2) (001:1336-1400)
       {S::ArcCentreAbsolute, "N3021", nullptr, 0, "N3021"},
-      // N3031: what G92's words mean (001:1789-1800); only 0 is executed yet
+      // N3031: what G92's words mean (001:1789-1800): 0 the tool's position, 1 the origin in
+      // machine coordinates, 2 a shift of the current origin that adds up
       {S::SetCoordinatesMode, "N3031", nullptr, 0, "N3031"},
       // N3023: the cycles that repeat modally until G80 (001:3516-3519); the setup writes the
       // set as bits, bit 0 = G81 ... bit 7 = G88 (N3023 = 1 is {81})

@@ -71,7 +71,8 @@ int expandToDialect(Session& s, const Dialect& target, const ExpandOptions& opt,
       flat.sequenceText.clear();
     }
     flat.comments.clear();
-    if (flat.words.empty()) return;
+    // a wordless block is dropped, but for the end of a cycle's contour (FMS `endcont`)
+    if (flat.words.empty() && flat.kind != ir::BlockKind::ContourEnd) return;
     contours.written(flat);
     emitter->block(flat);
   });

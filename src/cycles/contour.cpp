@@ -42,10 +42,12 @@ bool onArc(const ProfileSegment& s, const Vec2& p) {
   return t <= sweep(s) + 1e-12 || t >= kTwoPi - 1e-12;
 }
 
-/// An arc turns back on an axis when it passes an axis-parallel tangent strictly inside.
-bool arcTurnsBack(const ProfileSegment& s) {
+/// An arc turns back on an axis when it passes an axis-parallel tangent strictly inside: at
+/// quarter q (0 +z, 1 +x, 2 -z, 3 -x) it turns back along axis q % 2.
+bool arcTurnsBack(const ProfileSegment& s, int onlyAxis = -1) {
   const double r = radius(s), sw = sweep(s);
   for (int q = 0; q < 4; ++q) {
+    if (onlyAxis >= 0 && q % 2 != onlyAxis) continue;
     const double th = q * std::numbers::pi / 2;
     const double t = turnTo(s, s.center + r * Vec2(std::cos(th), std::sin(th)));
     if (t > 1e-9 && t < sw - 1e-9) return true;
@@ -183,6 +185,10 @@ std::optional<double> firstCrossing(const Profile& p, const RoughFrame& f, doubl
     if (!best || ahead < f.cutSign * (*best - from)) best = b;
   }
   return best;
+}
+
+bool turnsBackAlong(const ProfileSegment& s, int axis) {
+  return isArc(s.kind) && arcTurnsBack(s, axis);
 }
 
 void followProfile(const Profile& p, TurningPath& path, double f) {

@@ -62,6 +62,10 @@ std::optional<RoughFrame> checkTypeOne(const Profile& p, int levelAxis, const ch
 /// f.cutSign, meets the profile; nullopt when it does not.
 std::optional<double> firstCrossing(const Profile& p, const RoughFrame& f, double v, double from);
 
+/// Whether an arc passes, strictly inside its sweep, a point where its coordinate on lathe
+/// axis `axis` (0 z, 1 x) turns back; a line never does.
+bool turnsBackAlong(const ProfileSegment& s, int axis);
+
 /// Runs A' -> B at feed f: lines as G1, arcs as G2/G3 with their centres.
 void followProfile(const Profile& p, TurningPath& path, double f);
 

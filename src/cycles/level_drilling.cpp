@@ -87,10 +87,15 @@ std::variant<std::vector<CycleOp>, std::string> expandLevelHole(const LevelDrill
     const double v = *word('V');
     if (v <= 0) return fmt::format("G{} needs a step V > 0", req.cycle);
     const double total = std::fabs(p2 - p1);
+    double step = v, sum = 0;
     for (int k = 1;; ++k) {
-      depths.push_back(p1 + s * std::min(k * v, total));
-      if (k * v >= total - 1e-9) break;
+      // equal steps as k * V, never accumulated; a changing step as the sum of the steps
+      sum = req.stepFactor == 1 ? k * v : sum + step;
+      depths.push_back(p1 + s * std::min(sum, total));
+      if (sum >= total - 1e-9) break;
       if (k > 100000) return std::string("more than 100000 steps: is V a typing error?");
+      step *= req.stepFactor;
+      if (req.stepFactor < 1 && step < req.minimumStep) step = req.minimumStep;
     }
   }
   switch (req.cycle) {

@@ -23,6 +23,10 @@ struct LevelDrillRequest {
   double feed = 0;                   // F when not among the words
   int spindleDirection = 0;          // +1 M3, -1 M4, 0 stopped: what G84/G85/G88 restore
   double dwellSecondsPerUnit = 0.1;  // E and G87's W
+  // FMS G156/G157 on the G83 sequence: the k-th step is V * stepFactor^(k-1); with a factor
+  // below 1 a step never drops below minimumStep (once below, minimumStep to the end)
+  double stepFactor = 1;
+  double minimumStep = 0;
 };
 
 /// The ops, or the message of a missing, extra or bad parameter. Zero-length moves are left out.

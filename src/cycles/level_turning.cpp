@@ -6,12 +6,13 @@
 #include <string_view>
 
 #include "cycles/level_drilling.h"
+#include "cycles/level_turning_parts.h"
 
 namespace gcx::cycles {
 
-namespace {
+namespace level {
 
-constexpr int kX = 0, kZ = 2;
+namespace {
 
 // mandatory and allowed parameters (fms3000.md §5.1, §5.3 Tables 19, 23, 29, 35, 36)
 struct CycleWords {
@@ -20,46 +21,22 @@ struct CycleWords {
   std::string_view allowed;
 };
 constexpr CycleWords kWords[] = {
-    {150, "XZ", "XZPQF"}, {154, "UZVW", "UZVWIFEX"}, {160, "UZVW", "UZVWIFEX"},
-    {166, "R", "XZR"},    {167, "R", "XZR"},
+    {150, "XZ", "XZPQF"},
+    {151, "XZ", "XZPQF"},
+    {154, "UZVW", "UZVWIFEX"},
+    {155, "UXVW", "UXVWIFEZ"},
+    {156, "UZVWPQ", "UZVWPQIFEX"},
+    {157, "UXVWPQ", "UXVWPQIFEZ"},
+    {158, "XZQ", "XZQF"},
+    {159, "XZQ", "XZQF"},
+    {160, "UZVW", "UZVWIFEX"},
+    {161, "UXVW", "UXVWIFEZ"},
+    {163, "Z", "ZFXMI"},
+    {164, "Q", "QVWFDP"},
+    {165, "Q", "QVWFDP"},
+    {166, "R", "XZR"},
+    {167, "R", "XZR"},
 };
-
-double sign(double v) {
-  return v < 0 ? -1.0 : 1.0;
-}
-
-class Path {
-public:
-  explicit Path(const Vec3& start) : at_(start) {}
-  void to(OpKind kind, double x, double z, double feed = 0) {
-    Vec3 p = at_;
-    p[kX] = x;
-    p[kZ] = z;
-    appendMove(ops_, at_, kind, p, feed);
-  }
-  void arc(OpKind kind, double x, double z, double cx, double cz, double feed) {
-    CycleOp op;
-    op.kind = kind;
-    op.to = at_;
-    op.to[kX] = x;
-    op.to[kZ] = z;
-    op.center = at_;
-    op.center[kX] = cx;
-    op.center[kZ] = cz;
-    op.feed = feed;
-    ops_.push_back(op);
-    at_ = op.to;
-  }
-  double x() const { return at_[kX]; }
-  double z() const { return at_[kZ]; }
-  std::vector<CycleOp> take() { return std::move(ops_); }
-
-private:
-  Vec3 at_;
-  std::vector<CycleOp> ops_;
-};
-
-using Result = std::variant<std::vector<CycleOp>, std::string>;
 
 // G166/G167 (§5.3.2): the programmed axis p runs toward its target t, stopping r short of the
 // corner K = (t on p, the current value on q); the chamfer (a line) or the fillet (a quarter
@@ -124,26 +101,40 @@ Result singlePassTurning(const LevelTurnRequest& req, double feed) {
   return path.take();
 }
 
-// G154/G160 (Tables 23, 29) [R]: the G83/G86 sequence along Z from И.Т., then rapid to X
-Result drillingAlongZ(const LevelTurnRequest& req) {
+// G154/G156/G160 along Z, G155/G157/G161 along X (Tables 23-26, 29, 30) [R]: the G83 (G156,
+// G157 with the changing step) or G86 sequence on that axis from И.Т., with the end word of the
+// axis as the bottom, then rapid to the final position of the other axis when it is given.
+Result drillingAlongAnAxis(const LevelTurnRequest& req) {
+  const bool alongX = req.cycle == 155 || req.cycle == 157 || req.cycle == 161;
+  const int axis = alongX ? kX : kZ, other = alongX ? kZ : kX;
+  const char end = alongX ? 'X' : 'Z', final = alongX ? 'Z' : 'X';
   LevelDrillRequest drill;
-  drill.cycle = req.cycle == 154 ? 83 : 86;
-  drill.axis = kZ;
-  drill.firstAxis = kX;
+  drill.cycle = req.cycle == 160 || req.cycle == 161 ? 86 : 83;
+  drill.axis = axis;
+  drill.firstAxis = other;
   drill.secondAxis = 1;
   drill.position = req.position;
   drill.incremental = req.incremental;
   drill.feed = req.feed;
   drill.dwellSecondsPerUnit = req.dwellSecondsPerUnit;
+  if (req.cycle == 156 || req.cycle == 157) {
+    drill.stepFactor = req.words.at('P');
+    drill.minimumStep = std::abs(req.words.at('Q'));
+    if (drill.stepFactor <= 0) return fmt::format("G{}: the step factor P must be > 0", req.cycle);
+    if (drill.stepFactor < 1 && drill.minimumStep <= 0)
+      return fmt::format("G{}: a step factor P below 1 needs a minimum step Q > 0", req.cycle);
+  }
   for (const auto& [c, v] : req.words)
-    if (c != 'X') drill.words[c] = v;
+    if (c == end)
+      drill.words['Z'] = v;
+    else if (c != final && c != 'P' && c != 'Q')
+      drill.words[c] = v;
   auto ops = expandLevelHole(drill);
   if (std::holds_alternative<std::string>(ops)) return std::get<std::string>(ops);
   auto list = std::get<std::vector<CycleOp>>(std::move(ops));
-  if (const auto x = req.words.find('X'); x != req.words.end()) {
-    Vec3 from = list.empty() ? req.position : list.back().to;
-    Path path(from);
-    path.to(OpKind::Rapid, x->second + (req.incremental ? req.position[kX] : 0), from[kZ]);
+  if (req.words.count(final)) {
+    Path path(list.empty() ? req.position : list.back().to);
+    path.along(other, OpKind::Rapid, position(req, final, req.position[other]));
     for (const CycleOp& op : path.take())
       list.push_back(op);
   }
@@ -152,7 +143,29 @@ Result drillingAlongZ(const LevelTurnRequest& req) {
 
 } // namespace
 
-Result expandLevelTurning(const LevelTurnRequest& req) {
+} // namespace level
+
+std::string_view diameterWords(int cycle) {
+  switch (cycle) {
+  case 150:
+  case 151:
+  case 159:
+    return "XQ";
+  case 155:
+  case 157:
+  case 161:
+    return "UXVWIQ"; // every length along X (001:2998-2999, 3058-3059)
+  case 164:
+    return "QD"; // 001:3279-3280
+  case 165:
+    return "VW"; // 001:3370-3371
+  default:
+    return "X";
+  }
+}
+
+std::variant<std::vector<CycleOp>, std::string> expandLevelTurning(const LevelTurnRequest& req) {
+  using namespace level;
   const CycleWords* spec = nullptr;
   for (const CycleWords& c : kWords)
     if (c.cycle == req.cycle) spec = &c;
@@ -167,11 +180,21 @@ Result expandLevelTurning(const LevelTurnRequest& req) {
   switch (req.cycle) {
   case 150:
     return singlePassTurning(req, feed);
-  case 154:
-  case 160:
-    return drillingAlongZ(req);
-  default:
+  case 151:
+    return singlePassFacing(req, feed);
+  case 158:
+  case 159:
+    return grooves(req, feed);
+  case 163:
+    return tapping(req, feed);
+  case 164:
+  case 165:
+    return profileRoughing(req, feed);
+  case 166:
+  case 167:
     return chamferOrFillet(req, feed);
+  default:
+    return drillingAlongAnAxis(req);
   }
 }
 

@@ -169,6 +169,7 @@ inline constexpr const char* FmsFanucHabit = "GCXW11"; // a Fanuc spelling with 
 inline constexpr const char* FmsCycleParameters = "FMSX02"; // cycle words wrong (§5, 001:3912-3975)
 inline constexpr const char* FmsCallAndEnd = "FMSX03";      // P with M02/M30/M98 (§1.4, §10 Q21)
 inline constexpr const char* FmsPolarRule = "FMSX04"; // G36 polar rules (§3.11, 001:3856-3859)
+inline constexpr const char* FmsProfile = "FMSX05";   // G164/G165 profile wrong (001:3903-3975)
 
 // --- gcx translate between dialects (docs/translation.md)
 inline constexpr const char* TranslateNoCode = "GCX080"; // the target has no code for this meaning

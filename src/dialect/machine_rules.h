@@ -44,7 +44,8 @@ enum class Setting : unsigned char {
   CloseLoopMCode,       // the M code that closes the spindle position loop
   CompLookAhead,        // blocks radius compensation reads ahead beyond the 2 it always reads
   CompInterference,     // 1: a compensated move against its programmed direction is an alarm
-  SetCoordinatesMode,   // 0: set-coordinates words are the tool's position in the new system
+  SetCoordinatesMode,   // set-coordinates words: 0 the tool's position in the new system, 1 the
+                        // new origin in machine coordinates, 2 a shift of the origin (adds up)
   CompMergeDistance,    // mm: corner vectors closer than this on both axes are merged
   ModalLevelCycles,     // bit n: level drilling cycle 81+n repeats after each block with an axis
                         // word until it is cancelled

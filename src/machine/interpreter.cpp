@@ -259,6 +259,7 @@ bool Interpreter::execute(const ir::Block& block, const motion::Provenance& from
   blockRange_ = block.range;
   blockMoves_ = 0;
   ++blockSerial_;
+  if (pendingProfile_) return profileBlock(block, from) && !stopped_;
   return executeBlock(block) && !stopped_;
 }
 
@@ -648,11 +649,12 @@ bool Interpreter::applyNonMotion(const BlockWords& w, bool& consumed) {
   }
   if (const ir::Word* g = w.findAction(GAction::SetCoordinates)) {
     consumed = true;
-    if (const double mode = setting(profile_, setup_, Setting::SetCoordinatesMode); mode != 0)
-      return fail(diag::code::NotImplemented, g->range,
-                  fmt::format("{} with {} = {} is not implemented yet", gName(*g),
+    const double mode = setting(profile_, setup_, Setting::SetCoordinatesMode);
+    if (mode != 0 && mode != 1 && mode != 2)
+      return fail(diag::code::DataOutOfRange, g->range,
+                  fmt::format("{} = {} gives {} no meaning (0, 1 or 2)",
                               settingLabel(profile_, Setting::SetCoordinatesMode),
-                              emit::formatNumber(mode)));
+                              emit::formatNumber(mode), gName(*g)));
     if (w.s && profile_.machine.setCoordinatesSIsSpindleLimit) { // nct.md §3.18
       if (w.hasAxisWord())
         return fail(diag::code::ForbiddenAddress, w.s->range,
@@ -660,7 +662,7 @@ bool Interpreter::applyNonMotion(const BlockWords& w, bool& consumed) {
       state_.maxSpindleSpeed = w.s->number;
       return true;
     }
-    return setCoordinates(w);
+    return mode == 0 ? setCoordinates(w) : setCoordinateOrigin(w, mode == 2);
   }
   if (w.has(GAction::LocalCoordinates)) {
     consumed = true;
@@ -1372,6 +1374,11 @@ void Interpreter::message(const std::string& text, const motion::Provenance& fro
 
 void Interpreter::finish() {
   if (ended_) return;
+  if (pendingProfile_) { // G164/G165 whose profile never ended
+    fail(diag::code::FmsProfile, pendingProfile_->code,
+         "the profile after this cycle has no `endcont` line (001:3255-3259)");
+    return;
+  }
   if (directionLine_) { // a line by ,A alone never met the line that ends it (nct.md §4.3)
     fail(diag::code::IntersectionElement, blockRange_,
          "the program ends after a line given by its direction alone (,A): no over-determined "

@@ -26,6 +26,7 @@
 namespace gcx::cycles {
 struct CycleOp;
 struct ContourSegment;
+struct Profile;
 struct TurningWords;
 enum class TurningCycle : unsigned char;
 } // namespace gcx::cycles
@@ -245,6 +246,10 @@ private:
   Vec3 target(const BlockWords& w, bool allowPolar) const;
   bool axisGiven(const BlockWords& w, int axis) const { return w.axis[axis] || w.uvw[axis]; }
   bool setCoordinates(const BlockWords& w);
+  /// The other meanings of the set-coordinates words (Setting::SetCoordinatesMode 1, 2):
+  /// the new origin in machine coordinates, or a shift of the current origin that adds up
+  /// (machine/coordinate_origin.cpp).
+  bool setCoordinateOrigin(const BlockWords& w, bool additive);
   bool localCoordinates(const BlockWords& w);
   bool dataInput(const BlockWords& w, const ir::Block& b);
   bool oneSidedRapid(const BlockWords& w, const Vec3& to, const motion::Extra& extraTo);
@@ -257,7 +262,11 @@ private:
   /// The hole of the level cycle levelCycle_ with levelWords_, from the current position.
   bool levelHole(const SourceRange& code);
   /// The turning cycle levelCycle_ (G150-G167) with levelWords_ (machine/level_turning.cpp).
-  bool levelTurning(const SourceRange& code);
+  bool levelTurning(const SourceRange& code, const cycles::Profile* profile = nullptr);
+  /// While G164/G165 waits for `endcont`: keeps a profile block, or runs the cycle at `endcont`
+  /// (machine/level_profile.cpp).
+  bool profileBlock(const ir::Block& block, const motion::Provenance& from);
+  bool profileCycle();
   /// A block that sets the pole (GAction::PolePolar) or moves by I radius and A angle about it:
   /// run here, with the polar words turned into plane axis words; nullopt for any other block.
   std::optional<bool> polePolarBlock(const ir::Block& block);
@@ -361,6 +370,12 @@ private:
   std::map<char, double> levelWords_;         // its parameters, remembered until G80 or another
   bool repeatingLevelCycle_ = false;          // inside the block that repeats a modal cycle
   bool levelRapidFlag_ = false;               // `G0` among a turning cycle's parameters
+  struct PendingProfile {                     // G164/G165 before its `endcont`
+    SourceRange code;
+    motion::Provenance from;
+    std::vector<ContourBlock> blocks;
+  };
+  std::optional<PendingProfile> pendingProfile_;
   std::optional<std::array<double, 2>> pole_; // the polar pole on the plane's two axes (G36)
   bool polarRewritten_ = false;               // running a polar block's plane axis words
   std::optional<double> pendingDwell_; // seconds, run after the block's motion (dwellAfterMotion)

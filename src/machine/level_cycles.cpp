@@ -38,6 +38,10 @@ bool Interpreter::levelCycleBlock(const ir::Block& block, const ir::Word& code,
                   fmt::format("{} is no parameter of G{}", w.address, spec.arg));
     levelWords_[w.address[0]] = w.number;
   }
+  if (spec.arg == 164 || spec.arg == 165) { // runs at `endcont`, after its profile blocks
+    pendingProfile_ = PendingProfile{code.range, from_, {}};
+    return true;
+  }
   return levelHole(code.range);
 }
 

@@ -12,7 +12,7 @@
 
 namespace gcx::machine {
 
-bool Interpreter::levelTurning(const SourceRange& code) {
+bool Interpreter::levelTurning(const SourceRange& code, const cycles::Profile* profile) {
   if (levelCycle_ == 167 && state_.plane != motion::Plane::ZX)
     return fail(diag::code::FmsCycleParameters, code,
                 "G167 turns its fillet in the lathe plane: G18 first (fms3000.md §5.3.2)");
@@ -23,13 +23,14 @@ bool Interpreter::levelTurning(const SourceRange& code) {
   req.words = levelWords_;
   // X-type parameters follow the diameter setting; R of G166/G167 is always a radius
   if (state_.diameterAxes & 1u)
-    for (char c : {'X', 'Q'})
-      if (auto it = req.words.find(c); it != req.words.end() && (c == 'X' || levelCycle_ == 150))
-        it->second /= 2;
+    for (char c : cycles::diameterWords(levelCycle_))
+      if (auto it = req.words.find(c); it != req.words.end()) it->second /= 2;
   req.rapidFlag = levelRapidFlag_;
   req.modalRapid = state_.motion == GAction::Rapid;
   req.feed = state_.feed;
   req.dwellSecondsPerUnit = profile_.machine.dwell.secondsPerUnit;
+  req.profile = profile;
+  req.spindleDirection = state_.spindleDirection;
   if (auto f = levelWords_.find('F'); f != levelWords_.end()) state_.feed = f->second;
   const auto ops = cycles::expandLevelTurning(req);
   if (const std::string* why = std::get_if<std::string>(&ops))

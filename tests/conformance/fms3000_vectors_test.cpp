@@ -351,6 +351,36 @@ TEST(Fms3000Vectors_8, T27_FilletsByG167) {
                "L 25,0,-5 F1.2", "CW 20,0,0 C-5,20 r5 θ90"}));
 }
 
+TEST(Fms3000Vectors_8, T28_ProfileRoughingWithoutFinishing) {
+  EXPECT_EQ(run("G18G90G0X20Z2 · G164Q4F100G0D0.5P1 · G1Z-20 · G1X12Z-10 · G1X8Z0 · endcont · M30"),
+            (V{"R 20,0,2", "R 16,0,2", "L 16,0,-15 F100", "R 16.5,0,-15", "R 16.5,0,2", "R 12,0,2",
+               "L 12,0,-10 F100", "R 12.5,0,-10", "R 12.5,0,2", "R 20,0,2"}));
+}
+
+TEST(Fms3000Vectors_8, T29_ManualE34RoughingThenTheExplicitFinish) {
+  // a lathe program: G18 and diameter X; the levels are 1.5 apart in diameter (0.75 in radius),
+  // D0.5 is 0.25 in radius
+  const V m = run("G18 · N10 G0 Z5 · N20 X100 · N30 G164 Q1.5 F0.5 G0 P1 D0.5 · N40 G1 Z-100 · "
+                  "N50 X80 Z-90 · N60 G3 X40 Z-70 R20 · N70 G1 Z-50 · N80 X35 · "
+                  "N90 G2 X15 Z-40 R10 · N100 G1 X10 Z0 · endcont · rem finishing pass · "
+                  "N110 G0 X10 · N120 G1 Z0 F0.5 · N130 X15 Z-40 · N140 G3 X35 Z-50 R10 · "
+                  "N150 G1 X40 · N160 Z-70 · N170 G2 X80 Z-90 R20 · N180 G1 X100 Z-100 · "
+                  "N190 G0 Z5 · M30",
+                  diameterX());
+  ASSERT_EQ(m.size(), 2u + 59 * 4 + 1 + 9);
+  EXPECT_EQ(
+      V(m.begin(), m.begin() + 10),
+      (V{"R 0,0,5", "R 50,0,5", "R 49.25,0,5", "L 49.25,0,-99.25 F0.5", "R 49.5,0,-99.25",
+         "R 49.5,0,5", "R 48.5,0,5", "L 48.5,0,-98.5 F0.5", "R 48.75,0,-98.5", "R 48.75,0,5"}));
+  // level X40 meets N70 along its length: the cut ends at its end nearest z0 (§5.3.1)
+  EXPECT_EQ(m[2 + 39 * 4 + 1], "L 20,0,-50 F0.5");
+  EXPECT_EQ(
+      V(m.end() - 14, m.end()),
+      (V{"R 5.75,0,5", "L 5.75,0,-12 F0.5", "R 6,0,-12", "R 6,0,5", "R 50,0,5", "R 5,0,5",
+         "L 5,0,0 F0.5", "L 7.5,0,-40 F0.5", "CCW 17.5,0,-50 C-50,7.5 r10 θ90", "L 20,0,-50 F0.5",
+         "L 20,0,-70 F0.5", "CW 40,0,-90 C-70,40 r20 θ90", "L 50,0,-100 F0.5", "R 50,0,5"}));
+}
+
 TEST(Fms3000Vectors_8, T30_SinglePassTurningWithACone) {
   EXPECT_EQ(run("G18G90G0X30Z2 · G150X20Z-30P10Q25F100 · M30"),
             (V{"R 30,0,2", "L 20,0,2 F100", "L 20,0,-20 F100", "L 25,0,-30 F100", "L 30,0,-30 F100",
