@@ -8,6 +8,7 @@
 #include "antlr4-runtime.h"
 #include "diag/codes.h"
 #include "front/antlr_block_parser.h"
+#include "front/decimal_text.h"
 
 namespace gcx::fms3000 {
 
@@ -17,10 +18,7 @@ using antlr4::Token;
 namespace {
 
 double numberOf(const std::string& digits) {
-  std::string t = digits.front() == '.' ? "0" + digits : digits; // from_chars wants a digit
-  double v = 0;
-  std::from_chars(t.data(), t.data() + t.size(), v);
-  return v;
+  return front::decimalValue(digits);
 }
 
 bool isAddressToken(std::size_t type) {

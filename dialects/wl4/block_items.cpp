@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "diag/codes.h"
+#include "front/decimal_text.h"
 
 namespace gcx::wl4 {
 
@@ -181,7 +182,7 @@ const ir::Func* functionNamed(std::string_view name) {
 
 void setLiteral(ir::Word& w, char sign, const std::string& number) {
   w.kind = ir::ValueKind::Number;
-  w.number = std::stod(number) * (sign == '-' ? -1 : 1);
+  w.number = front::decimalValue(number) * (sign == '-' ? -1 : 1);
   w.text = (sign == '-' ? "-" : "") + number;
 }
 

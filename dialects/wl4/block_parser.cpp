@@ -10,6 +10,7 @@
 
 #include "diag/codes.h"
 #include "dialects/wl4/block_items.h"
+#include "front/decimal_text.h"
 
 namespace gcx::wl4 {
 
@@ -358,7 +359,7 @@ std::optional<ir::Expr> Parser::variable() {
   }
   auto d = digits(at);
   if (!d) return std::nullopt;
-  ir::Expr v = ir::Expr::variable(std::stod(*d));
+  ir::Expr v = ir::Expr::variable(front::decimalValue(*d));
   v.range = range(at, p_ - at);
   return v;
 }
@@ -428,7 +429,7 @@ std::optional<ir::Expr> Parser::primary() {
   if (isDigit(c) || c == '.') {
     auto n = number();
     if (!n) return std::nullopt;
-    return ir::Expr::literal(std::stod(*n), range(at, p_ - at));
+    return ir::Expr::literal(front::decimalValue(*n), range(at, p_ - at));
   }
   if (c == '#') {
     auto v = variable();

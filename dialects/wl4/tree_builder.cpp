@@ -8,6 +8,7 @@
 #include "diag/codes.h"
 #include "dialects/wl4/block_items.h"
 #include "front/antlr_block_parser.h"
+#include "front/decimal_text.h"
 
 namespace gcx::wl4 {
 
@@ -317,7 +318,7 @@ std::optional<ir::Expr> TreeToIr::primary(P::PrimaryContext* c) {
   if (!c || !c->getStart()) return std::nullopt;
   const std::size_t at = c->getStart()->getStartIndex();
   if (P::NumberContext* n = c->number())
-    return ir::Expr::literal(std::stod(n->getText()), rangeFrom(at, c));
+    return ir::Expr::literal(front::decimalValue(n->getText()), rangeFrom(at, c));
   if (c->variable() && c->ASSIGN()) { // a chain #1=#2=... nests like brackets
     if (++depth_ > kMaxExpressionDepth) {
       if (before(at)) {
@@ -374,7 +375,7 @@ std::optional<ir::Expr> TreeToIr::variable(P::VariableContext* c) {
     return std::nullopt;
   }
   if (next->getType() == P::DIGITS)
-    return ir::Expr::variable(std::stod(next->getText()), rangeFrom(at, c));
+    return ir::Expr::variable(front::decimalValue(next->getText()), rangeFrom(at, c));
   auto e = parenthesised(c->LPAREN(), c->expr(), false); // #(e): the variable e names
   if (!e) return std::nullopt;
   return node(ir::ExprKind::Indirect, at, c, {std::move(*e)});

@@ -1,6 +1,7 @@
 #include "front/decimal_text.h"
 
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <string>
 
@@ -19,7 +20,9 @@ double slowValue(std::string_view digits) {
   if (!digits.empty() && digits.front() == '.') text = "0"; // from_chars wants a leading digit
   text.append(digits);
   double v = 0;
-  std::from_chars(text.data(), text.data() + text.size(), v);
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec == std::errc::result_out_of_range) // beyond a double: too large, or too small to tell
+    return text.find_first_not_of("0.") < text.find('.') ? HUGE_VAL : 0.0;
   return v;
 }
 

@@ -6,7 +6,8 @@
 
 namespace gcx::front {
 
-/// The nearest double to digits; 0 for empty text. digits holds only '0'-'9' and one '.'.
+/// The nearest double to digits; 0 for empty text; infinity beyond the largest double (callers
+/// report it where they check values). digits holds only '0'-'9' and one '.'.
 double decimalValue(std::string_view digits);
 
 } // namespace gcx::front

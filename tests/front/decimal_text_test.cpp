@@ -3,6 +3,7 @@
 #include "front/decimal_text.h"
 
 #include <charconv>
+#include <cmath>
 #include <gtest/gtest.h>
 #include <string>
 
@@ -38,6 +39,12 @@ TEST(DecimalText, BeyondTheFastPathStillExact) {
                               "179769313486231570000000000000000000000000000000000000000000000",
                               "0.1000000000000000055511151231257827021181583404541015625"})
     EXPECT_EQ(decimalValue(d), reference(d)) << d;
+}
+
+TEST(DecimalText, BeyondADoubleIsInfiniteTooSmallIsZero) {
+  EXPECT_EQ(decimalValue(std::string(400, '9')), HUGE_VAL);
+  EXPECT_EQ(decimalValue(std::string(400, '9') + ".5"), HUGE_VAL);
+  EXPECT_EQ(decimalValue("0." + std::string(400, '0') + "1"), 0.0);
 }
 
 #ifdef GCX_HAVE_RAPIDCHECK
