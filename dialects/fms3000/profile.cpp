@@ -1,11 +1,18 @@
 #include "dialects/fms3000/profile.h"
 
+#include "cycles/level_cycle.h"
 #include "dialects/fms3000/control_flow.h"
 #include "dialects/fms3000/machine_rules.h"
 
 namespace gcx::fms3000 {
 
 namespace {
+
+using L = cycles::LevelCycle;
+// the level cycles bound by meaning (fms3000.md §5); GCodeSpec::arg carries the cycle
+constexpr int level(L cycle) {
+  return static_cast<int>(cycle);
+}
 
 std::vector<AddressSpec> addresses() {
   const double big = 1e16; // ±1E16 mm (Table 3, 001:298-300)
@@ -118,32 +125,37 @@ std::vector<GCodeSpec> gcodes() {
       {680, 0, "mirror off", A::MirrorOff},
       {690, 0, "scale factors", A::ScaleOn},
       {800, 13, "cycle cancel", A::CycleCancel},
-      {810, 13, "drilling cycle", A::LevelDrillCycle, 81},
-      {820, 13, "boring cycle, feed exit", A::LevelDrillCycle, 82},
-      {830, 13, "deep drilling cycle", A::LevelDrillCycle, 83},
-      {840, 13, "tapping cycle", A::LevelDrillCycle, 84},
-      {850, 13, "boring cycle, spindle stop", A::LevelDrillCycle, 85},
-      {860, 13, "chip-breaking drilling cycle", A::LevelDrillCycle, 86},
-      {870, 13, "interrupted drilling cycle with dwells", A::LevelDrillCycle, 87},
-      {880, 13, "boring cycle, oriented stop", A::LevelDrillCycle, 88},
-      {1500, 13, "single-pass longitudinal turning", A::LevelDrillCycle, 150},
-      {1510, 13, "single-pass facing", A::LevelDrillCycle, 151},
+      {810, 13, "drilling cycle", A::LevelDrillCycle, level(L::Drill)},
+      {820, 13, "boring cycle, feed exit", A::LevelDrillCycle, level(L::BoreFeedExit)},
+      {830, 13, "deep drilling cycle", A::LevelDrillCycle, level(L::DeepDrill)},
+      {840, 13, "tapping cycle", A::LevelDrillCycle, level(L::Tap)},
+      {850, 13, "boring cycle, spindle stop", A::LevelDrillCycle, level(L::BoreSpindleStop)},
+      {860, 13, "chip-breaking drilling cycle", A::LevelDrillCycle, level(L::ChipBreakDrill)},
+      {870, 13, "interrupted drilling cycle with dwells", A::LevelDrillCycle,
+       level(L::InterruptedDrill)},
+      {880, 13, "boring cycle, oriented stop", A::LevelDrillCycle, level(L::BoreOrientedStop)},
+      {1500, 13, "single-pass longitudinal turning", A::LevelDrillCycle,
+       level(L::LongitudinalPass)},
+      {1510, 13, "single-pass facing", A::LevelDrillCycle, level(L::FacingPass)},
       {1520, 13, "multi-pass longitudinal turning"},
       {1530, 13, "multi-pass facing"},
-      {1540, 13, "deep drilling along Z", A::LevelDrillCycle, 154},
-      {1550, 13, "peck grooving along X", A::LevelDrillCycle, 155},
-      {1560, 13, "deep drilling along Z, decreasing step", A::LevelDrillCycle, 156},
-      {1570, 13, "peck grooving along X, decreasing step", A::LevelDrillCycle, 157},
-      {1580, 13, "cylindrical grooves", A::LevelDrillCycle, 158},
-      {1590, 13, "face grooves", A::LevelDrillCycle, 159},
-      {1600, 13, "chip-breaking drilling along Z", A::LevelDrillCycle, 160},
-      {1610, 13, "chip-breaking grooving along X", A::LevelDrillCycle, 161},
+      {1540, 13, "deep drilling along Z", A::LevelDrillCycle, level(L::DeepDrillZ)},
+      {1550, 13, "peck grooving along X", A::LevelDrillCycle, level(L::PeckGrooveX)},
+      {1560, 13, "deep drilling along Z, decreasing step", A::LevelDrillCycle,
+       level(L::DeepDrillZDecreasing)},
+      {1570, 13, "peck grooving along X, decreasing step", A::LevelDrillCycle,
+       level(L::PeckGrooveXDecreasing)},
+      {1580, 13, "cylindrical grooves", A::LevelDrillCycle, level(L::CylindricalGrooves)},
+      {1590, 13, "face grooves", A::LevelDrillCycle, level(L::FaceGrooves)},
+      {1600, 13, "chip-breaking drilling along Z", A::LevelDrillCycle, level(L::ChipBreakDrillZ)},
+      {1610, 13, "chip-breaking grooving along X", A::LevelDrillCycle, level(L::ChipBreakGrooveX)},
       {1620, 13, "multi-pass thread"},
-      {1630, 13, "tap or die", A::LevelDrillCycle, 163},
-      {1640, 13, "longitudinal roughing to a profile", A::LevelDrillCycle, 164},
-      {1650, 13, "facing roughing to a profile", A::LevelDrillCycle, 165},
-      {1660, 0, "chamfer", A::LevelDrillCycle, 166},
-      {1670, 0, "fillet", A::LevelDrillCycle, 167},
+      {1630, 13, "tap or die", A::LevelDrillCycle, level(L::TapOrDie)},
+      {1640, 13, "longitudinal roughing to a profile", A::LevelDrillCycle,
+       level(L::LongitudinalRoughing)},
+      {1650, 13, "facing roughing to a profile", A::LevelDrillCycle, level(L::FacingRoughing)},
+      {1660, 0, "chamfer", A::LevelDrillCycle, level(L::Chamfer)},
+      {1670, 0, "fillet", A::LevelDrillCycle, level(L::Fillet)},
       {900, 14, "absolute", A::Absolute},
       {910, 14, "incremental", A::Incremental},
       {920, 10, "set the work system (N3031)", A::SetCoordinates},

@@ -10,13 +10,19 @@ namespace {
 
 // mandatory and allowed parameters per cycle (fms3000.md §5.1, §5.2)
 struct CycleWords {
-  int cycle;
+  LevelCycle cycle;
   const char* mandatory;
   const char* allowed;
 };
 constexpr CycleWords kWords[] = {
-    {81, "UZ", "UZIFE"},  {82, "UZ", "UZIFEH"},    {83, "UZVW", "UZIFEVW"}, {84, "UZ", "UZIFEM"},
-    {85, "UZ", "UZIFEM"}, {86, "UZVW", "UZIFEVW"}, {87, "UZV", "UZIFEVW"},  {88, "UZ", "UZIFEMXY"},
+    {LevelCycle::Drill, "UZ", "UZIFE"},
+    {LevelCycle::BoreFeedExit, "UZ", "UZIFEH"},
+    {LevelCycle::DeepDrill, "UZVW", "UZIFEVW"},
+    {LevelCycle::Tap, "UZ", "UZIFEM"},
+    {LevelCycle::BoreSpindleStop, "UZ", "UZIFEM"},
+    {LevelCycle::ChipBreakDrill, "UZVW", "UZIFEVW"},
+    {LevelCycle::InterruptedDrill, "UZV", "UZIFEVW"},
+    {LevelCycle::BoreOrientedStop, "UZ", "UZIFEMXY"},
 };
 
 class Builder {
@@ -60,18 +66,18 @@ std::variant<std::vector<CycleOp>, std::string> expandLevelHole(const LevelDrill
   const CycleWords* spec = nullptr;
   for (const CycleWords& c : kWords)
     if (c.cycle == req.cycle) spec = &c;
-  if (!spec) return fmt::format("G{} is no drilling cycle", req.cycle);
+  if (!spec) return fmt::format("{} is no drilling cycle", req.code);
   for (const auto& [letter, value] : req.words)
     if (std::string_view(spec->allowed).find(letter) == std::string_view::npos)
-      return fmt::format("{} is no parameter of G{}", letter, req.cycle);
+      return fmt::format("{} is no parameter of {}", letter, req.code);
   for (const char* m = spec->mandatory; *m; ++m)
-    if (!req.words.count(*m)) return fmt::format("G{} needs its parameter {}", req.cycle, *m);
+    if (!req.words.count(*m)) return fmt::format("{} needs its parameter {}", req.code, *m);
   auto word = [&](char c) -> std::optional<double> {
     auto it = req.words.find(c);
     return it == req.words.end() ? std::nullopt : std::optional<double>(it->second);
   };
   const double feed = word('F').value_or(req.feed);
-  if (feed <= 0) return fmt::format("G{} without a feed F", req.cycle);
+  if (feed <= 0) return fmt::format("{} without a feed F", req.code);
   const double p0 = req.position[req.axis];
   const double p1 = req.incremental ? p0 + *word('U') : *word('U');
   const double p2 = req.incremental ? p1 + *word('Z') : *word('Z');
@@ -83,9 +89,10 @@ std::variant<std::vector<CycleOp>, std::string> expandLevelHole(const LevelDrill
   b.move(OpKind::Rapid, p1);
   // the depths of the pecks, point 1 + s * min(kV, |p2 - p1|)
   std::vector<double> depths;
-  if (req.cycle == 83 || req.cycle == 86 || req.cycle == 87) {
+  if (req.cycle == LevelCycle::DeepDrill || req.cycle == LevelCycle::ChipBreakDrill ||
+      req.cycle == LevelCycle::InterruptedDrill) {
     const double v = *word('V');
-    if (v <= 0) return fmt::format("G{} needs a step V > 0", req.cycle);
+    if (v <= 0) return fmt::format("{} needs a step V > 0", req.code);
     const double total = std::fabs(p2 - p1);
     double step = v, sum = 0;
     for (int k = 1;; ++k) {
@@ -99,17 +106,17 @@ std::variant<std::vector<CycleOp>, std::string> expandLevelHole(const LevelDrill
     }
   }
   switch (req.cycle) {
-  case 81:
+  case LevelCycle::Drill:
     b.move(OpKind::Feed, p2, feed);
     b.dwell(e);
     b.move(OpKind::Rapid, p3);
     break;
-  case 82:
+  case LevelCycle::BoreFeedExit:
     b.move(OpKind::Feed, p2, feed);
     b.dwell(e);
     b.move(OpKind::Feed, p3, word('H').value_or(feed));
     break;
-  case 83: {
+  case LevelCycle::DeepDrill: {
     const double w = *word('W');
     for (std::size_t k = 0; k < depths.size(); ++k) {
       if (k > 0) {
@@ -122,7 +129,7 @@ std::variant<std::vector<CycleOp>, std::string> expandLevelHole(const LevelDrill
     b.move(OpKind::Rapid, p3);
     break;
   }
-  case 86: {
+  case LevelCycle::ChipBreakDrill: {
     const double w = *word('W');
     for (std::size_t k = 0; k < depths.size(); ++k) {
       if (k > 0) b.move(OpKind::Rapid, depths[k - 1] - s * w);
@@ -132,7 +139,7 @@ std::variant<std::vector<CycleOp>, std::string> expandLevelHole(const LevelDrill
     b.move(OpKind::Rapid, p3);
     break;
   }
-  case 87:
+  case LevelCycle::InterruptedDrill:
     for (std::size_t k = 0; k < depths.size(); ++k) {
       b.move(OpKind::Feed, depths[k], feed);
       if (k + 1 < depths.size()) b.dwell(word('W').value_or(0));
@@ -140,18 +147,18 @@ std::variant<std::vector<CycleOp>, std::string> expandLevelHole(const LevelDrill
     b.dwell(e);
     b.move(OpKind::Rapid, p3);
     break;
-  case 84:
+  case LevelCycle::Tap:
     b.move(OpKind::Feed, p2, feed);
     b.spindle(-req.spindleDirection);
     b.dwell(e);
     b.move(OpKind::Feed, p3, feed);
     b.dwell(e);
     break;
-  case 85:
-  case 88: {
+  case LevelCycle::BoreSpindleStop:
+  case LevelCycle::BoreOrientedStop: {
     b.move(OpKind::Feed, p2, feed);
     b.dwell(e);
-    if (req.cycle == 85) {
+    if (req.cycle == LevelCycle::BoreSpindleStop) {
       b.spindle(0);
       b.move(OpKind::Rapid, p3);
       break;
@@ -171,8 +178,9 @@ std::variant<std::vector<CycleOp>, std::string> expandLevelHole(const LevelDrill
   }
   b.move(OpKind::Rapid, p4);
   // G84 reverses back, G85/G88 restart the spindle, unless M is written (§5.2)
-  if ((req.cycle == 84 || req.cycle == 85 || req.cycle == 88) && !word('M') &&
-      req.spindleDirection != 0)
+  if ((req.cycle == LevelCycle::Tap || req.cycle == LevelCycle::BoreSpindleStop ||
+       req.cycle == LevelCycle::BoreOrientedStop) &&
+      !word('M') && req.spindleDirection != 0)
     b.spindle(req.spindleDirection);
   return b.take();
 }

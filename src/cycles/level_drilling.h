@@ -9,12 +9,14 @@
 #include <variant>
 #include <vector>
 
+#include "cycles/level_cycle.h"
 #include "cycles/ops.h"
 
 namespace gcx::cycles {
 
 struct LevelDrillRequest {
-  int cycle = 81;                    // 81..88
+  LevelCycle cycle = LevelCycle::Drill;
+  std::string code = "the cycle";    // as the program wrote it, for messages: "G81"
   int axis = 2;                      // the cycle axis: 2 under G17, 1 under G18, 0 under G19
   int firstAxis = 0, secondAxis = 1; // the plane's axes (G88's X/Y shift)
   Vec3 position = Vec3::Zero();      // point 0

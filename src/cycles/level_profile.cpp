@@ -20,41 +20,42 @@ constexpr long kMaxLevels = 100000; // more is a typing error, not a part (no ha
 struct Axes {
   int level, cut;
 };
-Axes axesOf(int cycle) {
-  return cycle == 165 ? Axes{0, 1} : Axes{1, 0};
+Axes axesOf(LevelCycle cycle) {
+  return cycle == LevelCycle::FacingRoughing ? Axes{0, 1} : Axes{1, 0};
 }
 
-const char* depthAxisName(int cycle) {
-  return cycle == 165 ? "Z" : "X";
+const char* depthAxisName(LevelCycle cycle) {
+  return cycle == LevelCycle::FacingRoughing ? "Z" : "X";
 }
 
-const char* approachAxisName(int cycle) {
-  return cycle == 165 ? "X" : "Z";
+const char* approachAxisName(LevelCycle cycle) {
+  return cycle == LevelCycle::FacingRoughing ? "X" : "Z";
 }
 
 } // namespace
 
-std::optional<ProfileFault> checkRoughingProfile(int cycle, const Profile& p) {
+std::optional<ProfileFault> checkRoughingProfile(LevelCycle cycle, std::string_view code,
+                                                 const Profile& p) {
   const Axes ax = axesOf(cycle);
   const Vec2 approach = p.aPrime - p.a;
   if (std::abs(approach[ax.level]) > kTol || std::abs(approach[ax.cut]) <= kTol)
-    return ProfileFault{p.ns, fmt::format("the first block after G{} approaches the profile "
+    return ProfileFault{p.ns, fmt::format("the first block after {} approaches the profile "
                                           "along {} only (001:3271-3272, 001:3916)",
-                                          cycle, approachAxisName(cycle))};
+                                          code, approachAxisName(cycle))};
   double direction = 0;
   for (const ProfileSegment& s : p.segments) {
     const double d = s.to[ax.level] - s.from[ax.level];
     const bool back = std::abs(d) > kTol && direction != 0 && level::sign(d) != direction;
     if (back || turnsBackAlong(s, ax.level))
-      return ProfileFault{s.range, fmt::format("the profile of G{} must be monotonic along {}; "
+      return ProfileFault{s.range, fmt::format("the profile of {} must be monotonic along {}; "
                                                "this block turns back (001:3287-3289, 001:3975)",
-                                               cycle, depthAxisName(cycle))};
+                                               code, depthAxisName(cycle))};
     if (direction == 0 && std::abs(d) > kTol) direction = level::sign(d);
   }
   if (direction == 0)
-    return ProfileFault{p.ns, fmt::format("the profile of G{} has no length along {}: nothing "
+    return ProfileFault{p.ns, fmt::format("the profile of {} has no length along {}: nothing "
                                           "to rough before endcont",
-                                          cycle, depthAxisName(cycle))};
+                                          code, depthAxisName(cycle))};
   return std::nullopt;
 }
 
@@ -72,7 +73,7 @@ bool cut(TurningPath& path, const LevelTurnRequest& req, int cutAxis, double hit
     return true;
   }
   LevelDrillRequest steps;
-  steps.cycle = 86;
+  steps.cycle = LevelCycle::ChipBreakDrill;
   steps.axis = cutAxis == 0 ? kZ : kX;
   steps.position = path.program(path.at());
   steps.words = {{'U', path.at()[cutAxis]},
@@ -101,18 +102,18 @@ Result profileRoughing(const LevelTurnRequest& req, double feed) {
   const Profile& c = *req.profile;
   const Axes ax = axesOf(req.cycle);
   if (req.words.count('V') != req.words.count('W'))
-    return fmt::format("G{}: V and W come together (001:3950-3953)", req.cycle);
+    return fmt::format("{}: V and W come together (001:3950-3953)", req.code);
   if (req.words.count('V') && (req.words.at('V') <= 0 || req.words.at('W') < 0))
-    return fmt::format("G{}: the step V must be > 0 and the retract W >= 0", req.cycle);
+    return fmt::format("{}: the step V must be > 0 and the retract W >= 0", req.code);
   const double q = std::abs(req.words.at('Q'));
-  if (q < 0.0005) return fmt::format("G{}: the depth per pass Q must not be 0", req.cycle);
-  if (feed <= 0) return fmt::format("G{} without a feed F", req.cycle);
+  if (q < 0.0005) return fmt::format("{}: the depth per pass Q must not be 0", req.code);
+  if (feed <= 0) return fmt::format("{} without a feed F", req.code);
   TurningPath path(req.position, motion::Plane::ZX);
   const Vec2 a = path.start();
   const Vec2 b = c.segments.empty() ? c.aPrime : c.segments.back().to;
   const double s = sign(a[ax.level] - b[ax.level]);
   if (std::abs(a[ax.level] - b[ax.level]) / q > kMaxLevels)
-    return fmt::format("G{}: more than {} passes: is Q a typing error?", req.cycle, kMaxLevels);
+    return fmt::format("{}: more than {} passes: is Q a typing error?", req.code, kMaxLevels);
   RoughFrame frame;
   frame.level = ax.level, frame.cut = ax.cut;
   frame.levelSign = -s, frame.cutSign = sign(c.aPrime[ax.cut] - a[ax.cut]);
@@ -129,7 +130,7 @@ Result profileRoughing(const LevelTurnRequest& req, double feed) {
       path.feed(p, feed);
     const double hit = firstCrossing(c, frame, v, a[ax.cut]).value_or(b[ax.cut]);
     if (!cut(path, req, ax.cut, hit, feed))
-      return fmt::format("G{}: the chip-breaking steps V W are wrong", req.cycle);
+      return fmt::format("{}: the chip-breaking steps V W are wrong", req.code);
     p = path.at();
     if (d != req.words.end()) {
       p[ax.level] = v + d->second;

@@ -16,26 +16,26 @@ namespace {
 
 // mandatory and allowed parameters (fms3000.md §5.1, §5.3 Tables 19, 23, 29, 35, 36)
 struct CycleWords {
-  int cycle;
+  LevelCycle cycle;
   std::string_view mandatory;
   std::string_view allowed;
 };
 constexpr CycleWords kWords[] = {
-    {150, "XZ", "XZPQF"},
-    {151, "XZ", "XZPQF"},
-    {154, "UZVW", "UZVWIFEX"},
-    {155, "UXVW", "UXVWIFEZ"},
-    {156, "UZVWPQ", "UZVWPQIFEX"},
-    {157, "UXVWPQ", "UXVWPQIFEZ"},
-    {158, "XZQ", "XZQF"},
-    {159, "XZQ", "XZQF"},
-    {160, "UZVW", "UZVWIFEX"},
-    {161, "UXVW", "UXVWIFEZ"},
-    {163, "Z", "ZFXMI"},
-    {164, "Q", "QVWFDP"},
-    {165, "Q", "QVWFDP"},
-    {166, "R", "XZR"},
-    {167, "R", "XZR"},
+    {LevelCycle::LongitudinalPass, "XZ", "XZPQF"},
+    {LevelCycle::FacingPass, "XZ", "XZPQF"},
+    {LevelCycle::DeepDrillZ, "UZVW", "UZVWIFEX"},
+    {LevelCycle::PeckGrooveX, "UXVW", "UXVWIFEZ"},
+    {LevelCycle::DeepDrillZDecreasing, "UZVWPQ", "UZVWPQIFEX"},
+    {LevelCycle::PeckGrooveXDecreasing, "UXVWPQ", "UXVWPQIFEZ"},
+    {LevelCycle::CylindricalGrooves, "XZQ", "XZQF"},
+    {LevelCycle::FaceGrooves, "XZQ", "XZQF"},
+    {LevelCycle::ChipBreakDrillZ, "UZVW", "UZVWIFEX"},
+    {LevelCycle::ChipBreakGrooveX, "UXVW", "UXVWIFEZ"},
+    {LevelCycle::TapOrDie, "Z", "ZFXMI"},
+    {LevelCycle::LongitudinalRoughing, "Q", "QVWFDP"},
+    {LevelCycle::FacingRoughing, "Q", "QVWFDP"},
+    {LevelCycle::Chamfer, "R", "XZR"},
+    {LevelCycle::Fillet, "R", "XZR"},
 };
 
 // G166/G167 (§5.3.2): the programmed axis p runs toward its target t, stopping r short of the
@@ -45,14 +45,14 @@ Result chamferOrFillet(const LevelTurnRequest& req, double feed) {
   const auto x = req.words.find('X'), z = req.words.find('Z');
   const bool alongZ = z != req.words.end();
   if (alongZ == (x != req.words.end()))
-    return fmt::format("G{} takes exactly one of X and Z", req.cycle);
+    return fmt::format("{} takes exactly one of X and Z", req.code);
   const int p = alongZ ? kZ : kX, q = alongZ ? kX : kZ;
   const double from = req.position[p];
   const double target = (alongZ ? z : x)->second + (req.incremental ? from : 0);
   const double r = std::abs(req.words.at('R'));
   const double d1 = sign(target - from), d2 = sign(req.words.at('R'));
   if (r == 0 || std::abs(target - from) < r - 1e-9)
-    return fmt::format("G{}: the travel {:g} is shorter than R {:g}", req.cycle,
+    return fmt::format("{}: the travel {:g} is shorter than R {:g}", req.code,
                        std::abs(target - from), r);
   Vec3 straight = req.position, end = req.position, centre = req.position;
   straight[p] = target - r * d1;
@@ -63,7 +63,7 @@ Result chamferOrFillet(const LevelTurnRequest& req, double feed) {
   Path path(req.position);
   path.to(req.modalRapid ? OpKind::Rapid : OpKind::Feed, straight[kX], straight[kZ],
           req.modalRapid ? 0 : feed);
-  if (req.cycle == 166) {
+  if (req.cycle == LevelCycle::Chamfer) {
     path.to(OpKind::Feed, end[kX], end[kZ], feed);
   } else {
     // G18 looks at Z (first) and X (second) from +Y: counterclockwise when the turn from the
@@ -86,7 +86,7 @@ Result singlePassTurning(const LevelTurnRequest& req, double feed) {
   const double x = at('X', x0), z = at('Z', z0);
   const bool cone = req.words.count('P') || req.words.count('Q');
   if (cone && !(req.words.count('P') && req.words.count('Q')))
-    return std::string("G150: P and Q come together (the cone)");
+    return fmt::format("{}: P and Q come together (the cone)", req.code);
   const double s = sign(z - z0);
   Path path(req.position);
   path.to(req.rapidFlag ? OpKind::Rapid : OpKind::Feed, x, z0, req.rapidFlag ? 0 : feed);
@@ -105,11 +105,17 @@ Result singlePassTurning(const LevelTurnRequest& req, double feed) {
 // G157 with the changing step) or G86 sequence on that axis from И.Т., with the end word of the
 // axis as the bottom, then rapid to the final position of the other axis when it is given.
 Result drillingAlongAnAxis(const LevelTurnRequest& req) {
-  const bool alongX = req.cycle == 155 || req.cycle == 157 || req.cycle == 161;
+  const bool alongX = req.cycle == LevelCycle::PeckGrooveX ||
+                      req.cycle == LevelCycle::PeckGrooveXDecreasing ||
+                      req.cycle == LevelCycle::ChipBreakGrooveX;
   const int axis = alongX ? kX : kZ, other = alongX ? kZ : kX;
   const char end = alongX ? 'X' : 'Z', final = alongX ? 'Z' : 'X';
   LevelDrillRequest drill;
-  drill.cycle = req.cycle == 160 || req.cycle == 161 ? 86 : 83;
+  drill.cycle =
+      req.cycle == LevelCycle::ChipBreakDrillZ || req.cycle == LevelCycle::ChipBreakGrooveX
+          ? LevelCycle::ChipBreakDrill
+          : LevelCycle::DeepDrill;
+  drill.code = req.code;
   drill.axis = axis;
   drill.firstAxis = other;
   drill.secondAxis = 1;
@@ -117,12 +123,13 @@ Result drillingAlongAnAxis(const LevelTurnRequest& req) {
   drill.incremental = req.incremental;
   drill.feed = req.feed;
   drill.dwellSecondsPerUnit = req.dwellSecondsPerUnit;
-  if (req.cycle == 156 || req.cycle == 157) {
+  if (req.cycle == LevelCycle::DeepDrillZDecreasing ||
+      req.cycle == LevelCycle::PeckGrooveXDecreasing) {
     drill.stepFactor = req.words.at('P');
     drill.minimumStep = std::abs(req.words.at('Q'));
-    if (drill.stepFactor <= 0) return fmt::format("G{}: the step factor P must be > 0", req.cycle);
+    if (drill.stepFactor <= 0) return fmt::format("{}: the step factor P must be > 0", req.code);
     if (drill.stepFactor < 1 && drill.minimumStep <= 0)
-      return fmt::format("G{}: a step factor P below 1 needs a minimum step Q > 0", req.cycle);
+      return fmt::format("{}: a step factor P below 1 needs a minimum step Q > 0", req.code);
   }
   for (const auto& [c, v] : req.words)
     if (c == end)
@@ -145,19 +152,19 @@ Result drillingAlongAnAxis(const LevelTurnRequest& req) {
 
 } // namespace level
 
-std::string_view diameterWords(int cycle) {
+std::string_view diameterWords(LevelCycle cycle) {
   switch (cycle) {
-  case 150:
-  case 151:
-  case 159:
+  case LevelCycle::LongitudinalPass:
+  case LevelCycle::FacingPass:
+  case LevelCycle::FaceGrooves:
     return "XQ";
-  case 155:
-  case 157:
-  case 161:
+  case LevelCycle::PeckGrooveX:
+  case LevelCycle::PeckGrooveXDecreasing:
+  case LevelCycle::ChipBreakGrooveX:
     return "UXVWIQ"; // every length along X (001:2998-2999, 3058-3059)
-  case 164:
+  case LevelCycle::LongitudinalRoughing:
     return "QD"; // 001:3279-3280
-  case 165:
+  case LevelCycle::FacingRoughing:
     return "VW"; // 001:3370-3371
   default:
     return "X";
@@ -169,29 +176,29 @@ std::variant<std::vector<CycleOp>, std::string> expandLevelTurning(const LevelTu
   const CycleWords* spec = nullptr;
   for (const CycleWords& c : kWords)
     if (c.cycle == req.cycle) spec = &c;
-  if (!spec) return fmt::format("G{} is not implemented yet", req.cycle);
+  if (!spec) return fmt::format("{} is not implemented yet", req.code);
   for (char c : spec->mandatory)
-    if (!req.words.count(c)) return fmt::format("G{} needs {}", req.cycle, c);
+    if (!req.words.count(c)) return fmt::format("{} needs {}", req.code, c);
   for (const auto& [c, v] : req.words)
     if (spec->allowed.find(c) == std::string_view::npos)
-      return fmt::format("{} is no parameter of G{}", c, req.cycle);
+      return fmt::format("{} is no parameter of {}", c, req.code);
   const auto f = req.words.find('F');
   const double feed = f != req.words.end() ? f->second : req.feed;
   switch (req.cycle) {
-  case 150:
+  case LevelCycle::LongitudinalPass:
     return singlePassTurning(req, feed);
-  case 151:
+  case LevelCycle::FacingPass:
     return singlePassFacing(req, feed);
-  case 158:
-  case 159:
+  case LevelCycle::CylindricalGrooves:
+  case LevelCycle::FaceGrooves:
     return grooves(req, feed);
-  case 163:
+  case LevelCycle::TapOrDie:
     return tapping(req, feed);
-  case 164:
-  case 165:
+  case LevelCycle::LongitudinalRoughing:
+  case LevelCycle::FacingRoughing:
     return profileRoughing(req, feed);
-  case 166:
-  case 167:
+  case LevelCycle::Chamfer:
+  case LevelCycle::Fillet:
     return chamferOrFillet(req, feed);
   default:
     return drillingAlongAnAxis(req);

@@ -13,14 +13,16 @@
 #include <vector>
 
 #include "cycles/contour.h"
+#include "cycles/level_cycle.h"
 #include "cycles/ops.h"
 
 namespace gcx::cycles {
 
 struct LevelTurnRequest {
-  int cycle = 150;
-  Vec3 position = Vec3::Zero(); // the start point И.Т.
-  bool incremental = false;     // G91: positions are signed distances from И.Т.
+  LevelCycle cycle = LevelCycle::LongitudinalPass;
+  std::string code = "the cycle"; // as the program wrote it, for messages: "G150"
+  Vec3 position = Vec3::Zero();   // the start point И.Т.
+  bool incremental = false;       // G91: positions are signed distances from И.Т.
   /// The cycle's parameters, remembered ones included; X-type values already as radius.
   std::map<char, double> words;
   bool rapidFlag = false;           // `G0` among the parameters: the first segment is a rapid
@@ -38,10 +40,11 @@ struct ProfileFault {
   SourceRange where;
   std::string why;
 };
-std::optional<ProfileFault> checkRoughingProfile(int cycle, const Profile& profile);
+std::optional<ProfileFault> checkRoughingProfile(LevelCycle cycle, std::string_view code,
+                                                 const Profile& profile);
 
 /// The parameters of `cycle` measured along X: diameters when X is programmed as a diameter.
-std::string_view diameterWords(int cycle);
+std::string_view diameterWords(LevelCycle cycle);
 
 /// The ops, or the message of a missing, extra or bad parameter. Zero-length moves are left out.
 std::variant<std::vector<CycleOp>, std::string> expandLevelTurning(const LevelTurnRequest& req);

@@ -20,7 +20,7 @@ Result singlePassFacing(const LevelTurnRequest& req, double feed) {
   const double x0 = req.position[kX], z0 = req.position[kZ];
   const double x = position(req, 'X', x0), z = position(req, 'Z', z0);
   const bool p = req.words.count('P') != 0, q = req.words.count('Q') != 0;
-  if (p != q) return std::string("G151: P and Q come together (the cone)");
+  if (p != q) return fmt::format("{}: P and Q come together (the cone)", req.code);
   Path path(req.position);
   path.along(kZ, req.rapidFlag ? OpKind::Rapid : OpKind::Feed, z, req.rapidFlag ? 0 : feed);
   if (p) {
@@ -38,16 +38,16 @@ Result singlePassFacing(const LevelTurnRequest& req, double feed) {
 // the bottom X and a rapid back to x0; between grooves Z moves at F, or rapid with the G0 flag.
 // G159 (Table 28) the same with X and Z swapped. The cycle ends out of the last groove.
 Result grooves(const LevelTurnRequest& req, double feed) {
-  const bool face = req.cycle == 159;
+  const bool face = req.cycle == LevelCycle::FaceGrooves;
   const int deep = face ? kZ : kX, step = face ? kX : kZ;
   const char deepWord = face ? 'Z' : 'X', stepWord = face ? 'X' : 'Z';
   const double out = req.position[deep], first = req.position[step];
   const double bottom = position(req, deepWord, out), last = position(req, stepWord, first);
   const double pitch = std::abs(req.words.at('Q'));
-  if (pitch < 0.0005) return fmt::format("G{}: the pitch Q must not be 0", req.cycle);
+  if (pitch < 0.0005) return fmt::format("{}: the pitch Q must not be 0", req.code);
   const double s = sign(last - first), travel = std::abs(last - first);
   if (travel / pitch > kMaxGrooves)
-    return fmt::format("G{}: more than {} grooves: is Q a typing error?", req.cycle, kMaxGrooves);
+    return fmt::format("{}: more than {} grooves: is Q a typing error?", req.code, kMaxGrooves);
   Path path(req.position);
   for (long k = 0;; ++k) {
     const bool end = k * pitch >= travel - 0.0005;
@@ -67,10 +67,11 @@ Result grooves(const LevelTurnRequest& req, double feed) {
 // zero mark before the Z move) changes no motion: a synchronised move starts on the mark.
 Result tapping(const LevelTurnRequest& req, double feed) {
   if (const auto m = req.words.find('M'); m != req.words.end() && m->second != 5)
-    return std::string("G163: M5 is its only M (a stop before the reverse)");
-  if (feed <= 0) return std::string("G163 needs the thread pitch F > 0 (mm per revolution)");
+    return fmt::format("{}: M5 is its only M (a stop before the reverse)", req.code);
+  if (feed <= 0)
+    return fmt::format("{} needs the thread pitch F > 0 (mm per revolution)", req.code);
   if (req.spindleDirection == 0)
-    return std::string("G163 taps with the spindle turning: M03 or M04 first");
+    return fmt::format("{} taps with the spindle turning: M03 or M04 first", req.code);
   const double z0 = req.position[kZ];
   const bool stop = req.words.count('M') != 0;
   Path path(req.position);

@@ -34,7 +34,7 @@ void Interpreter::cancelCycleMode() {
   state_.returnToR = false;                               // G98 again (000:9456-9459)
   setModalCode(codeOf(profile_, GAction::ReturnInitial)); // the return-level group's code
   cycles::cancel(cycles_->drill);
-  levelCycle_ = 0; // and the level cycles' remembered words (fms3000.md §5.1)
+  levelCycle_.reset(); // and the level cycles' remembered words (fms3000.md §5.1)
   levelWords_.clear();
 }
 

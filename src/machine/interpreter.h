@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "cycles/level_cycle.h"
 #include "diag/diagnostic.h"
 #include "dialect/profile.h"
 #include "ir/block.h"
@@ -261,7 +262,7 @@ private:
   std::optional<bool> levelCycleRepeat(const ir::Block& block);
   /// The hole of the level cycle levelCycle_ with levelWords_, from the current position.
   bool levelHole(const SourceRange& code);
-  /// The turning cycle levelCycle_ (G150-G167) with levelWords_ (machine/level_turning.cpp).
+  /// The level turning cycle levelCycle_ with levelWords_ (machine/level_turning.cpp).
   bool levelTurning(const SourceRange& code, const cycles::Profile* profile = nullptr);
   /// While G164/G165 waits for `endcont`: keeps a profile block, or runs the cycle at `endcont`
   /// (machine/level_profile.cpp).
@@ -365,12 +366,13 @@ private:
   CompensationStage comp_;     // between the programmed path and the sink
   ContourSource contours_;
   std::optional<std::int64_t> resumeAfter_;
-  const GCodeSpec* pendingTurning_ = nullptr; // a one-shot turning cycle in the current block
-  int levelCycle_ = 0;                        // the level drilling cycle whose words are kept
-  std::map<char, double> levelWords_;         // its parameters, remembered until G80 or another
-  bool repeatingLevelCycle_ = false;          // inside the block that repeats a modal cycle
-  bool levelRapidFlag_ = false;               // `G0` among a turning cycle's parameters
-  struct PendingProfile {                     // G164/G165 before its `endcont`
+  const GCodeSpec* pendingTurning_ = nullptr;    // a one-shot turning cycle in the current block
+  std::optional<cycles::LevelCycle> levelCycle_; // the level cycle whose words are kept
+  std::string levelCode_;                        // its code as written, for messages: "G81"
+  std::map<char, double> levelWords_;            // its parameters, remembered until G80 or another
+  bool repeatingLevelCycle_ = false;             // inside the block that repeats a modal cycle
+  bool levelRapidFlag_ = false;                  // `G0` among a turning cycle's parameters
+  struct PendingProfile {                        // G164/G165 before its `endcont`
     SourceRange code;
     motion::Provenance from;
     std::vector<ContourBlock> blocks;

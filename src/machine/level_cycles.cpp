@@ -10,6 +10,7 @@
 
 #include "cycles/level_drilling.h"
 #include "diag/codes.h"
+#include "emit/number.h"
 #include "machine/interpreter.h"
 #include "machine/settings.h"
 #include "motion/geometry.h"
@@ -21,24 +22,26 @@ bool Interpreter::levelCycleBlock(const ir::Block& block, const ir::Word& code,
   ir::Block before = block;
   std::erase_if(before.words, [&](const ir::Word& w) { return w.order >= code.order; });
   if (!before.words.empty() && !executeBlock(before)) return false;
-  if (levelCycle_ != spec.arg) levelWords_.clear();
-  if (spec.arg == 166 || spec.arg == 167) levelWords_.clear(); // one block each (§8 T26, T27)
+  const auto cycle = static_cast<cycles::LevelCycle>(spec.arg); // the profile's binding
+  if (levelCycle_ != cycle) levelWords_.clear();
+  if (cycles::isOneBlock(cycle)) levelWords_.clear(); // one block each (§8 T26, T27)
   levelRapidFlag_ = false;
-  levelCycle_ = spec.arg;
+  levelCycle_ = cycle;
+  levelCode_ = "G" + emit::formatNumber(code.number);
   if (spec.group > 0 && spec.group < static_cast<int>(modalCodes_.size()))
     modalCodes_[spec.group] = spec.code10;
   for (const ir::Word& w : block.words) {
     if (w.order <= code.order) continue;
-    if (w.is('G') && w.number == 0 && spec.arg >= 150) { // the turning cycles' rapid flag
+    if (w.is('G') && w.number == 0 && cycles::isLevelTurning(cycle)) { // their rapid flag
       levelRapidFlag_ = true;
       continue;
     }
     if (w.address.size() != 1 || w.is('G'))
       return fail(diag::code::ForbiddenAddress, w.range,
-                  fmt::format("{} is no parameter of G{}", w.address, spec.arg));
+                  fmt::format("{} is no parameter of {}", w.address, levelCode_));
     levelWords_[w.address[0]] = w.number;
   }
-  if (spec.arg == 164 || spec.arg == 165) { // runs at `endcont`, after its profile blocks
+  if (cycles::takesProfile(cycle)) { // runs at `endcont`, after its profile blocks
     pendingProfile_ = PendingProfile{code.range, from_, {}};
     return true;
   }
@@ -46,10 +49,11 @@ bool Interpreter::levelCycleBlock(const ir::Block& block, const ir::Word& code,
 }
 
 bool Interpreter::levelHole(const SourceRange& code) {
-  if (levelCycle_ >= 150) return levelTurning(code);
+  if (cycles::isLevelTurning(*levelCycle_)) return levelTurning(code);
   const motion::PlaneAxes ax = motion::axesOf(state_.plane);
   cycles::LevelDrillRequest req;
-  req.cycle = levelCycle_;
+  req.cycle = *levelCycle_;
+  req.code = levelCode_;
   req.axis = ax.normal;
   req.firstAxis = ax.first;
   req.secondAxis = ax.second;
@@ -63,7 +67,7 @@ bool Interpreter::levelHole(const SourceRange& code) {
   const auto ops = cycles::expandLevelHole(req);
   if (const std::string* why = std::get_if<std::string>(&ops))
     return fail(diag::code::MissingData, code, *why);
-  from_.chain.push_back({code.begin, fmt::format("G{}", levelCycle_)});
+  from_.chain.push_back({code.begin, levelCode_});
   const bool ok = runCycleOps(std::get<std::vector<cycles::CycleOp>>(ops),
                               std::numeric_limits<std::size_t>::max(), BlockWords{}, ax.normal);
   from_.chain.pop_back();
@@ -71,9 +75,11 @@ bool Interpreter::levelHole(const SourceRange& code) {
 }
 
 std::optional<bool> Interpreter::levelCycleRepeat(const ir::Block& block) {
-  if (levelCycle_ < 81 || levelCycle_ > 88 || repeatingLevelCycle_) return std::nullopt;
+  if (!levelCycle_ || cycles::isLevelTurning(*levelCycle_) || repeatingLevelCycle_)
+    return std::nullopt;
+  // one bit per drilling cycle, in the order of cycles::LevelCycle
   const auto modal = static_cast<unsigned>(setting(profile_, setup_, Setting::ModalLevelCycles));
-  if (!(modal & (1u << (levelCycle_ - 81)))) return std::nullopt;
+  if (!(modal & (1u << static_cast<unsigned>(*levelCycle_)))) return std::nullopt;
   // fms3000.md §5.1: only a block with an axis word repeats the cycle (§10 leaves the others open)
   const bool axisWord = std::any_of(block.words.begin(), block.words.end(), [](const ir::Word& w) {
     return w.address.size() == 1 &&
@@ -84,7 +90,7 @@ std::optional<bool> Interpreter::levelCycleRepeat(const ir::Block& block) {
   const bool ok = executeBlock(block);
   repeatingLevelCycle_ = false;
   if (!ok || stopped_) return false;
-  if (levelCycle_ == 0) return true; // the block cancelled the cycle (G80)
+  if (!levelCycle_) return true; // the block cancelled the cycle (G80)
   return levelHole(block.range);
 }
 

@@ -37,10 +37,10 @@ bool Interpreter::profileBlock(const ir::Block& block, const motion::Provenance&
   for (const ir::Word& w : block.words)
     if (!allowedInProfile(w, approach))
       return fail(diag::code::FmsProfile, w.range,
-                  fmt::format("{} is not allowed in the profile of G{}: only N X Z G1 G2 G3 G90 "
+                  fmt::format("{} is not allowed in the profile of {}: only N X Z G1 G2 G3 G90 "
                               "G91 I J K R F (001:3287-3291, 001:3903-3909)",
                               w.is('G') ? "G" + emit::formatNumber(w.number) : w.address,
-                              levelCycle_));
+                              levelCode_));
   if (block.kind == ir::BlockKind::Normal && !block.words.empty())
     pendingProfile_->blocks.push_back({block, from});
   return true;
@@ -52,24 +52,24 @@ bool Interpreter::profileCycle() {
   if (state_.plane != motion::Plane::ZX)
     return fail(
         diag::code::FmsCycleParameters, pending.code,
-        fmt::format("G{} turns in the lathe plane: G18 first (fms3000.md §5.3)", levelCycle_));
+        fmt::format("{} turns in the lathe plane: G18 first (fms3000.md §5.3)", levelCode_));
   if (pending.blocks.empty())
     return fail(diag::code::FmsProfile, pending.code,
-                fmt::format("G{} needs an approach block and a profile before endcont "
+                fmt::format("{} needs an approach block and a profile before endcont "
                             "(001:3255-3259)",
-                            levelCycle_));
+                            levelCode_));
   // the cycle's F is the profile's feed unless a profile block sets its own (001:3283)
   if (auto f = levelWords_.find('F'); f != levelWords_.end()) state_.feed = f->second;
   std::vector<cycles::ContourSegment> moves;
   if (!traceContour(pending.blocks, moves)) return false;
   if (moves.empty())
     return fail(diag::code::FmsProfile, pending.code,
-                fmt::format("the profile of G{} does not move", levelCycle_));
+                fmt::format("the profile of {} does not move", levelCode_));
   moves.front().modeProgrammed = true; // the approach may keep the modal G0/G1
   const auto profile =
       cycles::makeProfile(moves, motion::Plane::ZX, pending.blocks.front().block.range, diags_);
   if (!profile) return false;
-  if (const auto fault = cycles::checkRoughingProfile(levelCycle_, *profile))
+  if (const auto fault = cycles::checkRoughingProfile(*levelCycle_, levelCode_, *profile))
     return fail(diag::code::FmsProfile, fault->where, fault->why);
   from_ = pending.from;
   return levelTurning(pending.code, &*profile);

@@ -13,17 +13,20 @@
 namespace gcx::machine {
 
 bool Interpreter::levelTurning(const SourceRange& code, const cycles::Profile* profile) {
-  if (levelCycle_ == 167 && state_.plane != motion::Plane::ZX)
+  if (levelCycle_ == cycles::LevelCycle::Fillet && state_.plane != motion::Plane::ZX)
     return fail(diag::code::FmsCycleParameters, code,
-                "G167 turns its fillet in the lathe plane: G18 first (fms3000.md §5.3.2)");
+                fmt::format("{} turns its fillet in the lathe plane: G18 first (fms3000.md "
+                            "§5.3.2)",
+                            levelCode_));
   cycles::LevelTurnRequest req;
-  req.cycle = levelCycle_;
+  req.cycle = *levelCycle_;
+  req.code = levelCode_;
   req.position = program_;
   req.incremental = state_.incremental;
   req.words = levelWords_;
   // X-type parameters follow the diameter setting; R of G166/G167 is always a radius
   if (state_.diameterAxes & 1u)
-    for (char c : cycles::diameterWords(levelCycle_))
+    for (char c : cycles::diameterWords(*levelCycle_))
       if (auto it = req.words.find(c); it != req.words.end()) it->second /= 2;
   req.rapidFlag = levelRapidFlag_;
   req.modalRapid = state_.motion == GAction::Rapid;
@@ -35,7 +38,7 @@ bool Interpreter::levelTurning(const SourceRange& code, const cycles::Profile* p
   const auto ops = cycles::expandLevelTurning(req);
   if (const std::string* why = std::get_if<std::string>(&ops))
     return fail(diag::code::FmsCycleParameters, code, *why);
-  from_.chain.push_back({code.begin, fmt::format("G{}", levelCycle_)});
+  from_.chain.push_back({code.begin, levelCode_});
   const bool ok = runCycleOps(std::get<std::vector<cycles::CycleOp>>(ops),
                               std::numeric_limits<std::size_t>::max(), BlockWords{},
                               motion::axesOf(state_.plane).normal);
