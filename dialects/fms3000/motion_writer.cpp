@@ -1,6 +1,7 @@
 #include "dialects/fms3000/motion_writer.h"
 
 #include "dialects/fms3000/emitter.h"
+#include "dialects/fms3000/hole_writer.h"
 #include "dialects/fms3000/profile.h"
 #include "translate/flat_writer.h"
 
@@ -17,6 +18,7 @@ makeMotionWriter(std::ostream& out, const emit::MotionWriterOptions& opt, diag::
   s.decimals = 4;
   s.codeDigits = 2; // G00, G04, M03 as the manual writes them
   s.comment = emit::lineComment;
+  if (opt.keepCycles) s.holes = makeHoleWriter();
   return std::make_unique<emit::FlatWriter>(makeEmitter(out), std::move(s), opt, diags);
 }
 

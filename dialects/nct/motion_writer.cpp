@@ -1,6 +1,7 @@
 #include "dialects/nct/motion_writer.h"
 
 #include "dialects/nct/emitter.h"
+#include "dialects/nct/hole_writer.h"
 #include "dialects/nct/profile.h"
 #include "translate/flat_writer.h"
 
@@ -44,6 +45,7 @@ makeMotionWriter(std::ostream& out, const emit::MotionWriterOptions& opt, diag::
   o.words.push_back(w);
   s.opening.push_back(std::move(o));
   s.comment = comment;
+  if (opt.keepCycles) s.holes = makeHoleWriter();
   return std::make_unique<emit::FlatWriter>(makeEmitter(out), std::move(s), opt, diags);
 }
 

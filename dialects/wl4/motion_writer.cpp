@@ -1,6 +1,7 @@
 #include "dialects/wl4/motion_writer.h"
 
 #include "dialects/wl4/emitter.h"
+#include "dialects/wl4/hole_writer.h"
 #include "dialects/wl4/profile.h"
 #include "translate/flat_writer.h"
 
@@ -35,6 +36,7 @@ makeMotionWriter(std::ostream& out, const emit::MotionWriterOptions& opt, diag::
   s.decimals = 3; // resolution 0.001 mm (002:40); more decimals are rounded when used
   s.programName = unitName(opt.programName);
   s.comment = emit::lineComment;
+  if (opt.keepCycles) s.holes = makeHoleWriter();
   return std::make_unique<emit::FlatWriter>(makeEmitter(out), std::move(s), opt, diags);
 }
 

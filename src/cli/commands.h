@@ -73,6 +73,7 @@ struct TranslateOptions {
   std::string output; // a file, or the folder of a batch; empty: standard output
   std::string setup;
   bool verify = true;        // --no-verify: write without the equivalence proof
+  std::string expand;        // --expand: what the translation may not keep ("cycles,loops", "all")
   bool writeOffsets = false; // --write-offsets: ngc sets the setup's work offsets by G10 L2
   double tolerance = 0.001;
   std::string rs274 = "rs274";

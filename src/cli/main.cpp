@@ -178,8 +178,17 @@ int main(int argc, char** argv) {
                         "output file (default: standard output), or the folder of a batch");
   translate->add_option("--setup", translateOpt.setup,
                         "machine setup (JSON); in a batch, a program's NAME.setup.json wins");
-  translate->add_flag("!--no-verify", translateOpt.verify,
-                      "write without proving the result equivalent (gcx equiv)");
+  translate->add_flag("--verify,!--no-verify", translateOpt.verify,
+                      "prove the result moves the tool like the source before it is written "
+                      "(gcx equiv; the default), or write without the proof");
+  translate
+      ->add_option("--expand", translateOpt.expand,
+                   "what the translation may not keep: cycles,subprograms,loops,variables or "
+                   "all (flat motion)")
+      ->check([](const std::string& list) {
+        std::string why;
+        return gcx::cli::parseExpand(list, why) ? std::string() : why;
+      });
   translate->add_flag("--write-offsets", translateOpt.writeOffsets,
                       "ngc: set the setup's work offsets by G10 L2 at the start of the program");
   translate->add_option("--tol", translateOpt.tolerance, "how far the paths may be apart (mm)")

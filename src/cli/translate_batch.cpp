@@ -38,7 +38,8 @@ struct Job {
   double seconds = 0;
   long peakKb = 0;
   std::string reason;
-  std::string status; // verified, written, failed
+  std::string status;         // verified, written, failed
+  std::string kept, expanded; // the structures, from the child's note
 };
 
 // The programs of the tree in a stable order, each with the dialect its name (or --from) gives.
@@ -62,7 +63,8 @@ std::vector<Job> collect(const fs::path& root, const fs::path& outRoot, const Tr
       continue;
     }
     std::string why;
-    const auto target = translateTarget(*d, opt.to, why);
+    const std::optional<ExpandSet> expand = parseExpand(opt.expand, why);
+    const auto target = expand ? translateTarget(*d, opt.to, *expand, why) : std::nullopt;
     Job j;
     j.input = f;
     // by the path under root, not where a symlink points: the output stays under OUTDIR
@@ -87,10 +89,23 @@ std::vector<std::string> childArguments(const Job& j, const TranslateOptions& op
   if (!opt.common.dialect.empty()) a.insert(a.end(), {"--from", opt.common.dialect});
   if (!opt.verify) a.push_back("--no-verify");
   if (opt.writeOffsets) a.push_back("--write-offsets");
+  if (!opt.expand.empty()) a.insert(a.end(), {"--expand", opt.expand});
   a.insert(a.end(), {"--tol", fmt::format("{}", opt.tolerance), "--rs274", opt.rs274});
   for (const std::string& lib : opt.common.libraryDirs)
     a.insert(a.end(), {"--lib", lib});
   return a;
+}
+
+// The child's note ("gcx: note: IN: ...") as its kept and expanded structures.
+void readNote(const fs::path& log, const fs::path& input, Job& j) {
+  std::ifstream in(log);
+  const std::string head = "gcx: note: " + input.string() + ": ";
+  for (std::string line; std::getline(in, line);)
+    if (line.starts_with(head)) {
+      const NoteParts parts = splitNote(line.substr(head.size()));
+      j.kept = parts.kept;
+      j.expanded = parts.expanded;
+    }
 }
 
 // The first error line of a child's standard error (without the "file:line:col: error: "
@@ -150,6 +165,7 @@ void finish(Job& j, int status, const rusage& usage, const Running& r) {
     j.exitCode = WEXITSTATUS(status);
     j.status = j.exitCode == 0 ? "ok" : "failed";
     if (j.exitCode != 0) j.reason = reasonFrom(r.log);
+    if (j.exitCode == 0) readNote(r.log, j.input, j);
   }
   std::error_code ec;
   fs::remove(r.log, ec);
@@ -166,24 +182,26 @@ std::string csvField(const std::string& s) {
 void writeReports(const fs::path& outRoot, const std::vector<Job>& jobs, const std::string& status,
                   const std::string& summary) {
   std::ofstream csv(outRoot / "report.csv");
-  csv << "program,output,status,exit,seconds,peak_rss_kb,reason\n";
+  csv << "program,output,status,exit,seconds,peak_rss_kb,reason,kept,expanded\n";
   for (const Job& j : jobs)
-    csv << fmt::format("{},{},{},{},{:.3f},{},{}\n", csvField(j.relative),
+    csv << fmt::format("{},{},{},{},{:.3f},{},{},{},{}\n", csvField(j.relative),
                        csvField(j.output.string()), j.status == "ok" ? status : j.status,
-                       j.exitCode, j.seconds, j.peakKb, csvField(j.reason));
+                       j.exitCode, j.seconds, j.peakKb, csvField(j.reason), csvField(j.kept),
+                       csvField(j.expanded));
   std::ofstream html(outRoot / "report.html");
   html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>gcx translate</title>"
           "<style>body{font-family:sans-serif}td,th{padding:2px 8px;text-align:left}"
           ".failed{color:#b00}</style></head><body>\n<h1>gcx translate</h1>\n<p>"
        << motion::xmlEscape(summary)
        << "</p>\n<table>\n<tr><th>program</th><th>status</th><th>seconds</th><th>peak RSS "
-          "(kB)</th><th>reason</th></tr>\n";
+          "(kB)</th><th>reason</th><th>kept</th><th>expanded</th></tr>\n";
   for (const Job& j : jobs)
     html << fmt::format("<tr class=\"{}\"><td>{}</td><td>{}</td><td>{:.3f}</td><td>{}</td>"
-                        "<td>{}</td></tr>\n",
+                        "<td>{}</td><td>{}</td><td>{}</td></tr>\n",
                         j.status, motion::xmlEscape(j.relative),
                         j.status == "ok" ? status : j.status, j.seconds, j.peakKb,
-                        motion::xmlEscape(j.reason));
+                        motion::xmlEscape(j.reason), motion::xmlEscape(j.kept),
+                        motion::xmlEscape(j.expanded));
   html << "</table>\n</body></html>\n";
 }
 

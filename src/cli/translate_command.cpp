@@ -78,7 +78,10 @@ int runTranslate(const std::string& input, const TranslateOptions& opt) {
     return UsageError;
   }
   std::string why;
-  const std::optional<TranslateTarget> target = translateTarget(*source, opt.to, why);
+  const std::optional<ExpandSet> expandSet = parseExpand(opt.expand, why);
+  if (!expandSet) why = "--expand " + opt.expand + ": " + why;
+  const std::optional<TranslateTarget> target =
+      expandSet ? translateTarget(*source, opt.to, *expandSet, why) : std::nullopt;
   if (!target) {
     diag::reportUsage(why);
     return UsageError;
@@ -99,20 +102,36 @@ int runTranslate(const std::string& input, const TranslateOptions& opt) {
   } discard{staged};
   std::string note = target->note;
   bool kept = false;
-  if (target->name == "ngc") {
+  if (target->name == "ngc" && !expandSet->any()) {
     // LinuxCNC's own structure where it means the same, proven like the flat motion
     const NgcStructure ngc = writeStructuredNgc(*source, input, staged.string(), opt);
     std::ostringstream proof;
     kept = ngc.written && (!opt.verify || verified(input, staged, true, opt, proof));
     note = ngcNote(ngc, kept, target->note, proof.str());
   }
+  if (target->motionWriter) {
+    // cycles kept where the target has them, proven; else everything run out, proven
+    FlatAttempt attempt = planFlatMotion(input, *target, opt, target->keepCycles);
+    if (const int rc = writeFlatMotion(input, *target, opt, staged.string(), attempt)) return rc;
+    std::ostringstream proof;
+    bool proven = !opt.verify || verified(input, staged, false, opt, proof);
+    if (!proven && attempt.keepCycles) { // again with every cycle run out, the note says why
+      attempt = planFlatMotion(input, *target, opt, false, divergence(proof.str()));
+      if (const int rc = writeFlatMotion(input, *target, opt, staged.string(), attempt)) return rc;
+      proven = verified(input, staged, false, opt);
+    } else if (!proven) {
+      std::cerr << proof.str();
+    }
+    if (!proven) return ProgramErrors;
+    note = attempt.note;
+    kept = true; // written and proven: nothing below runs
+  }
   if (!kept) {
-    if (const int rc = target->motionWriter  ? writeFlatMotion(input, *target, opt, staged.string())
-                       : target->printSource ? runFmt(input, expand.output, expand.common)
-                                             : runExpand(input, expand))
+    if (const int rc = target->printSource ? runFmt(input, expand.output, expand.common)
+                                           : runExpand(input, expand))
       return rc;
     if (target->name == "ngc" && !prependComment(staged.string(), note)) return UsageError;
-    if (opt.verify && !verified(input, staged, target->dialect && !target->motionWriter, opt))
+    if (opt.verify && !verified(input, staged, target->dialect != nullptr, opt))
       return ProgramErrors;
   }
   if (opt.output.empty()) {

@@ -87,17 +87,21 @@ std::string ngcNote(const NgcStructure& ngc, bool kept, const std::string& flat,
   }
   if (!ngc.unkept.empty()) return flat + ": " + ngc.unkept;
   if (!ngc.written) return flat;
+  return flat + ": the structured program did not move the tool like the source" +
+         divergence(proof);
+}
+
+std::string divergence(const std::string& proof) {
   // the proof names the first divergence: "first difference at A:1:1 vs B:2:1: what"
-  std::string detail;
   const std::string head = "first difference at ";
   if (const std::size_t at = proof.find(head); at != std::string::npos) {
     const std::string line =
         proof.substr(at + head.size(), proof.find('\n', at) - at - head.size());
     const std::size_t vs = line.find(" vs "), what = line.find(": ", vs);
     if (vs != std::string::npos && what != std::string::npos)
-      detail = ": " + line.substr(what + 2) + " at " + line.substr(0, vs);
+      return ": " + line.substr(what + 2) + " at " + line.substr(0, vs);
   }
-  return flat + ": the structured program did not move the tool like the source" + detail;
+  return {};
 }
 
 bool prependComment(const std::string& file, const std::string& note) {

@@ -27,6 +27,9 @@ NgcStructure writeStructuredNgc(const Dialect& source, const std::string& input,
 std::string ngcNote(const NgcStructure& ngc, bool kept, const std::string& flat,
                     const std::string& proof);
 
+/// ": what differs at A.nct:3:1" from what the equivalence engine printed, or empty.
+std::string divergence(const std::string& proof);
+
 /// Puts `( note )` before the first line of `file`.
 bool prependComment(const std::string& file, const std::string& note);
 

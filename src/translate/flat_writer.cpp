@@ -330,12 +330,102 @@ bool FlatWriter::end(const motion::Event& e) {
   return true;
 }
 
+// The target's blocks as a hole's lowering writes them.
+class FlatWriter::HoleOut : public xlate::BlockOut {
+public:
+  explicit HoleOut(FlatWriter& w) : w_(w) {}
+  const Profile& profile() const override { return *w_.syntax_.profile; }
+  void writeCode(char letter, int code10) override { w_.code(letter, code10); }
+  void writeValue(const char* address, double value) override {
+    w_.word(address, w_.rounded(value));
+  }
+  void writeExact(const char* address, double value) override { w_.word(address, value); }
+  void writeAssign(int variable, double value) override {
+    ir::Stmt s;
+    s.kind = ir::StmtKind::Assign;
+    s.target = ir::Expr::variable(variable);
+    s.value = ir::Expr::literal(w_.rounded(value));
+    s.order = static_cast<std::uint32_t>(w_.block_.words.size() + w_.block_.stmts.size());
+    w_.block_.stmts.push_back(std::move(s));
+  }
+  double rounded(double value) const override { return w_.rounded(value); }
+  void endBlock() override { w_.flush(); }
+
+private:
+  FlatWriter& w_;
+};
+
+void FlatWriter::record(const xlate::Hole& h, const std::string& why) {
+  if (opt_.structures)
+    opt_.structures->push_back({h.at, std::string(xlate::holeKindName(h.kind)), why});
+}
+
+// A hole as the target's cycle, when it has one of the same meaning here; false (nothing
+// written) when not.
+bool FlatWriter::lowerHole(const xlate::Hole& h, const motion::Event& first) {
+  HoleOut out(*this);
+  if (const std::optional<std::string> why = syntax_.holes->refuse(h, out)) {
+    record(h, *why);
+    return false;
+  }
+  if (!feedMode(false, first)) return false;
+  if (plane_ != motion::Plane::XY) { // the cycle drills along the plane's normal: Z
+    begin();
+    if (!gcode(GAction::PlaneXY, first, "the XY plane")) return false;
+    flush();
+    plane_ = motion::Plane::XY;
+  }
+  syntax_.holes->write(h, out);
+  inCycle_ = true;
+  at_ = motion::Vec3(rounded(h.x), rounded(h.y), rounded(h.exit));
+  record(h, "");
+  return true;
+}
+
+// Writes the events that can no longer become part of a hole; the rest wait for the next
+// event (or the end, `complete`).
+void FlatWriter::drain(bool complete) {
+  while (ok_ && !ended_ && !pending_.empty()) {
+    const std::vector<motion::Event> window(pending_.begin(), pending_.end());
+    const xlate::HoleMatch m = extraWords_
+                                   ? xlate::HoleMatch{}
+                                   : xlate::matchHole(window, complete, last_ ? &*last_ : nullptr);
+    if (m.status == xlate::HoleMatch::NeedMore) return;
+    std::size_t taken = 1;
+    if (m.status == xlate::HoleMatch::Found) {
+      taken = m.length;
+      if (!lowerHole(m.hole, window.front()))
+        for (std::size_t i = 0; i < taken && ok_; ++i) // the cycle's own motion
+          write(window[i]);
+    } else {
+      write(window.front());
+    }
+    last_ = window[taken - 1];
+    pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(taken));
+  }
+}
+
 void FlatWriter::event(const motion::Event& e) {
   if (!ok_ || ended_) return;
   header(e);
   if (motion::isMotion(e))
     for (int i = 0; i < 3; ++i)
       if (e.extraStart[i] != e.extraEnd[i]) extraWords_ = true;
+  if (!syntax_.holes) {
+    write(e);
+    return;
+  }
+  pending_.push_back(e);
+  drain(false);
+}
+
+void FlatWriter::write(const motion::Event& e) {
+  if (!ok_ || ended_) return;
+  if (inCycle_) { // a block that is no hole ends the target's cycle mode first
+    HoleOut out(*this);
+    syntax_.holes->cancel(out);
+    inCycle_ = false;
+  }
   switch (e.kind) {
   case Kind::Rapid:
     straight(GAction::Rapid, e.end, e.extraEnd, e);
@@ -407,8 +497,14 @@ void FlatWriter::event(const motion::Event& e) {
 }
 
 void FlatWriter::finish() {
+  if (syntax_.holes) drain(true);
   if (!ok_) return;
   motion::Event last;
+  if (inCycle_ && !ended_) {
+    HoleOut out(*this);
+    syntax_.holes->cancel(out);
+    inCycle_ = false;
+  }
   header(last);
   // a program of the target ends with its end code (FMS-3000 requires one, 001:3880)
   if (!ended_) {

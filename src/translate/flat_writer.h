@@ -5,8 +5,10 @@
 // resolution) the dialect gives in FlatSyntax. Coordinates are machine-frame, metric, absolute,
 // as in canonical motion (emit/canonical.h): the result runs without a setup.
 #pragma once
+#include <deque>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +16,7 @@
 #include "emit/emitter.h"
 #include "emit/motion_writer.h"
 #include "ir/block.h"
+#include "translate/hole_lowering.h"
 
 namespace gcx::emit {
 
@@ -27,6 +30,8 @@ struct FlatSyntax {
   std::vector<ir::Block> opening, closing;
   /// A comment line in the dialect's syntax.
   std::function<ir::Block(const std::string&)> comment;
+  /// The target's drilling cycles (translate/hole_lowering.h), when cycles are kept.
+  std::unique_ptr<xlate::HoleLowering> holes;
 };
 
 /// A comment line that runs to the end of the line (FMS-3000 `rem`, WL4 `$`).
@@ -41,6 +46,11 @@ public:
   bool ok() const override { return ok_; }
 
 private:
+  class HoleOut;
+  void write(const motion::Event& e);
+  void drain(bool complete);
+  bool lowerHole(const xlate::Hole& h, const motion::Event& first);
+  void record(const xlate::Hole& h, const std::string& why);
   bool fail(const motion::Event& e, const char* code, const std::string& message);
   void begin();
   void flush();
@@ -74,6 +84,11 @@ private:
   motion::Plane plane_ = motion::Plane::XY;
   motion::Vec3 at_ = motion::Vec3::Zero(); // where the written program has the tool
   bool extraWords_ = false;                // A B C on every move once one has moved
+  // kept cycles: the events that may still be a hole, the one written before them, and
+  // whether the target is in a cycle mode the next block must end
+  std::deque<motion::Event> pending_;
+  std::optional<motion::Event> last_;
+  bool inCycle_ = false;
 };
 
 } // namespace gcx::emit

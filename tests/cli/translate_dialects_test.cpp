@@ -20,18 +20,15 @@ protected:
   const fs::path& dir_ = folder_.path();
 };
 
+// A program with no cycle, call, loop or variable: the note names only the frame.
 constexpr const char* kNote =
-    "cycles, subprograms, loops, variables and modal calls expanded into the motion they run: "
-    "the codes of another dialect mean other things here; machine frame, offsets and tool lengths "
-    "in the coordinates, run without a setup";
+    "machine frame, offsets and tool lengths in the coordinates, run without a setup";
 
 // The note in comment lines of at most 60 characters, in each dialect's comment syntax.
 std::string noteLines(const std::string& before, const std::string& after) {
   std::string out;
-  for (const char* line : {"cycles, subprograms, loops, variables and modal calls",
-                           "expanded into the motion they run: the codes of another",
-                           "dialect mean other things here; machine frame, offsets and",
-                           "tool lengths in the coordinates, run without a setup"})
+  for (const char* line :
+       {"machine frame, offsets and tool lengths in the coordinates,", "run without a setup"})
     out += before + line + after;
   return out;
 }

@@ -113,7 +113,8 @@ TEST_F(TranslateCli, ABatchTranslatesATreeAndReportsEachProgram) {
   EXPECT_TRUE(fs::exists(dir_ / "out/b/THREE.ngc"));
   EXPECT_FALSE(fs::exists(dir_ / "out/b/TWO.ngc"));
   const std::string csv = readFile(dir_ / "out/report.csv");
-  EXPECT_EQ(csv.substr(0, csv.find('\n')), "program,output,status,exit,seconds,peak_rss_kb,reason");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "program,output,status,exit,seconds,peak_rss_kb,reason,kept,expanded");
   EXPECT_NE(csv.find("\na/ONE.nct,out/a/ONE.ngc,verified,0,"), std::string::npos) << csv;
   EXPECT_NE(csv.find("\nb/THREE.wl4,out/b/THREE.ngc,verified,0,"), std::string::npos) << csv;
   EXPECT_NE(csv.find("\nb/TWO.nct,out/b/TWO.ngc,failed,1,"), std::string::npos) << csv;

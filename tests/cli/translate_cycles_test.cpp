@@ -1,0 +1,380 @@
+// gcx translate between dialects keeps drilling cycles as the target's own (docs/translation.md
+// "Cycles across dialects"): each hole lifted from the motion its cycle ran, written with the
+// target's cycle of the same meaning, proven by the equivalence engine; a hole the target's
+// cycles cannot write is run out into motion, and the note says where and why.
+#include <gtest/gtest.h>
+
+#include "support/cli_folder.h"
+
+namespace gcx::test {
+namespace {
+
+// NCT: a G99 hole, the same again modally, a G98 hole with a dwell.
+constexpr const char* kNctHoles = "G90 G0 X0 Y0 Z50\n"
+                                  "G99 G81 X10 Y10 R2 Z-10 F100\n"
+                                  "X20\n"
+                                  "G98 G82 X30 P0.5\n"
+                                  "G80\n"
+                                  "M30\n";
+
+// FMS-3000: a hole, the same again by parameter memory, one more with its exit I at the start.
+constexpr const char* kFmsHoles = "G90 G00 X0 Y0 Z50\n"
+                                  "X10 Y10 G81 U2 Z-10 F100\n"
+                                  "X20 G81\n"
+                                  "X30 G81 I50\n"
+                                  "G80\n"
+                                  "M30\n";
+
+// WL4: #2 #3, then two moves that each call %81.
+constexpr const char* kWl4Holes = "%C\n"
+                                  "G90 G0 X0 Y0 Z50\n"
+                                  "#2=2 #3=-10\n"
+                                  "G81 G0 X10 Y10 F100\n"
+                                  "X20\n"
+                                  "G80\n"
+                                  "G0 Z50\n"
+                                  "M30\n"
+                                  "%\n";
+
+// NCT G98 G85: feed in, feed out, then the initial level.
+constexpr const char* kNctBores = "G90 G0 X0 Y0 Z50\n"
+                                  "G98 G85 X10 Y10 R2 Z-10 F100\n"
+                                  "X20\n"
+                                  "G80\n"
+                                  "M30\n";
+
+class TranslateCycles : public testing::Test {
+protected:
+  void write(const std::string& name, const std::string& bytes) { folder_.write(name, bytes); }
+  CliResult gcx(const std::string& args) { return folder_.gcx(args); }
+  std::string read(const std::string& name) { return readFile(folder_.path() / name); }
+
+  CliFolder folder_{"translate-cycles"};
+};
+
+// NCT G99 G81 / a modal hole / G98 G82 P: FMS-3000 positions by the words before G81, U is R, the
+// G98 return an I at the initial level, the dwell E in tenths; a later hole writes only what
+// changed.
+TEST_F(TranslateCycles, Fms3000Spec_5_1_NctDrillingBecomesG81WithUZIAndItsParameterMemory) {
+  write("A.nct", kNctHoles);
+  const CliResult r = gcx("translate A.nct --to fms3000 -o A.fms");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("A.fms"), "rem translated from A.nct (nct) by gcx\r\n"
+                           "rem kept as fms3000 cycles: drilling (A.nct:2, 3), drilling with\r\n"
+                           "rem dwell (A.nct:4); machine frame, offsets and tool lengths in\r\n"
+                           "rem the coordinates, run without a setup\r\n"
+                           "G90 G94 G17\r\n"
+                           "G00 X0 Y0 Z50\r\n"
+                           "G00 X10 Y10 G81 U2 Z-10 F100\r\n"
+                           "G00 X20 Y10 G81\r\n"
+                           "G00 X30 Y10 G81 I50 E5\r\n"
+                           "G80\r\n"
+                           "M30\r\n");
+  EXPECT_EQ(
+      r.err,
+      "gcx: note: A.nct: kept as fms3000 cycles: drilling (A.nct:2, 3), drilling with dwell "
+      "(A.nct:4); machine frame, offsets and tool lengths in the coordinates, run without a setup\n"
+      "gcx: A.nct -> A.fms: verified, moves the tool like the source within 0.001 mm\n");
+}
+
+// The same program to WL4: #2 R and #3 the bottom, the move of a G81 block calls %81; %82 dwells #4
+// seconds. The stock cycles stay at #2, so the G98 hole is followed by G80 and a rapid to its
+// level.
+TEST_F(TranslateCycles, Wl4Spec_5_2_NctDrillingBecomesG81CallingPercent81WithItsLevelsInLocals) {
+  write("A.nct", kNctHoles);
+  const CliResult r = gcx("translate A.nct --to wl4 -o A.wl4");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("A.wl4"), "%A\n"
+                           "$translated from A.nct (nct) by gcx\n"
+                           "$kept as wl4 cycles: drilling (A.nct:2, 3), drilling with\n"
+                           "$dwell (A.nct:4); machine frame, offsets and tool lengths in\n"
+                           "$the coordinates, run without a setup\n"
+                           "G90 G94 G17\n"
+                           "G0 X0 Y0 Z50\n"
+                           "#2=2 #3=-10\n"
+                           "G81 G0 X10 Y10 F100\n"
+                           "G0 X20 Y10\n"
+                           "#4=0.5\n"
+                           "G82 G0 X30 Y10 F100\n"
+                           "G80\n"
+                           "G0 Z50\n"
+                           "M30\n"
+                           "%\n");
+  EXPECT_EQ(
+      r.err,
+      "gcx: note: A.nct: kept as wl4 cycles: drilling (A.nct:2, 3), drilling with dwell (A.nct:4); "
+      "machine frame, offsets and tool lengths in the coordinates, run without a setup\n"
+      "gcx: A.nct -> A.wl4: verified, moves the tool like the source within 0.001 mm\n");
+}
+
+// FMS-3000 G81 without I ends at U: NCT G99; with I at the initial level: G98 on the later hole.
+TEST_F(TranslateCycles, CyclesSpec_2_3_Fms3000LevelsBecomeG99OrG98ByWhereTheHoleEnds) {
+  write("B.fms", kFmsHoles);
+  const CliResult r = gcx("translate B.fms --to nct -o B.nct");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("B.nct"), "O1\n"
+                           "(translated from B.fms [fms3000] by gcx)\n"
+                           "(kept as nct cycles: drilling [B.fms:2, 3, 4]; machine frame,)\n"
+                           "(offsets and tool lengths in the coordinates, run without a)\n"
+                           "(setup)\n"
+                           "G90 G94 G17 G21\n"
+                           "G0 X0 Y0 Z50\n"
+                           "G99 G81 X10 Y10 R2 Z-10 F100\n"
+                           "X20 Y10\n"
+                           "G98 X30 Y10\n"
+                           "G80\n"
+                           "M30\n");
+  EXPECT_EQ(r.err,
+            "gcx: note: B.fms: kept as nct cycles: drilling (B.fms:2, 3, 4); machine frame, "
+            "offsets and tool lengths in the coordinates, run without a setup\n"
+            "gcx: B.fms -> B.nct: verified, moves the tool like the source within 0.001 mm\n");
+}
+
+// FMS-3000 to WL4: the exit I above U has no place in %81: G80 and a rapid after the hole.
+TEST_F(TranslateCycles, Wl4Spec_5_2_Fms3000ExitAboveUBecomesG80AndARapid) {
+  write("B.fms", kFmsHoles);
+  const CliResult r = gcx("translate B.fms --to wl4 -o B.wl4");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("B.wl4"), "%B\n"
+                           "$translated from B.fms (fms3000) by gcx\n"
+                           "$kept as wl4 cycles: drilling (B.fms:2, 3, 4); machine frame,\n"
+                           "$offsets and tool lengths in the coordinates, run without a\n"
+                           "$setup\n"
+                           "G90 G94 G17\n"
+                           "G0 X0 Y0 Z50\n"
+                           "#2=2 #3=-10\n"
+                           "G81 G0 X10 Y10 F100\n"
+                           "G0 X20 Y10\n"
+                           "G0 X30 Y10\n"
+                           "G80\n"
+                           "G0 Z50\n"
+                           "M30\n"
+                           "%\n");
+  EXPECT_EQ(r.err,
+            "gcx: note: B.fms: kept as wl4 cycles: drilling (B.fms:2, 3, 4); machine frame, "
+            "offsets and tool lengths in the coordinates, run without a setup\n"
+            "gcx: B.fms -> B.wl4: verified, moves the tool like the source within 0.001 mm\n");
+}
+
+// WL4 G81 with #2 #3: each move calls %81, which stays at #2: NCT G99 G81 R Z, then X Y.
+TEST_F(TranslateCycles, CyclesSpec_2_3_Wl4CallsOfPercent81BecomeG99G81) {
+  write("C.wl4", kWl4Holes);
+  const CliResult r = gcx("translate C.wl4 --to nct -o C.nct");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("C.nct"), "O1\n"
+                           "(translated from C.wl4 [wl4] by gcx)\n"
+                           "(kept as nct cycles: drilling [C.wl4:4, 5]; run out into)\n"
+                           "(motion: variables [C.wl4:3]; machine frame, offsets and tool)\n"
+                           "(lengths in the coordinates, run without a setup)\n"
+                           "G90 G94 G17 G21\n"
+                           "G0 X0 Y0 Z50\n"
+                           "G99 G81 X10 Y10 R2 Z-10 F100\n"
+                           "X20 Y10\n"
+                           "G80\n"
+                           "G0 X20 Y10 Z50\n"
+                           "M30\n");
+  EXPECT_EQ(
+      r.err,
+      "gcx: note: C.wl4: kept as nct cycles: drilling (C.wl4:4, 5); run out into motion: variables "
+      "(C.wl4:3); machine frame, offsets and tool lengths in the coordinates, run without a setup\n"
+      "gcx: C.wl4 -> C.nct: verified, moves the tool like the source within 0.001 mm\n");
+}
+
+// The same WL4 program to FMS-3000: G81 U Z, the second hole remembering them.
+TEST_F(TranslateCycles, Fms3000Spec_5_1_Wl4CallsOfPercent81BecomeG81U) {
+  write("C.wl4", kWl4Holes);
+  const CliResult r = gcx("translate C.wl4 --to fms3000 -o C.fms");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("C.fms"), "rem translated from C.wl4 (wl4) by gcx\r\n"
+                           "rem kept as fms3000 cycles: drilling (C.wl4:4, 5); run out into\r\n"
+                           "rem motion: variables (C.wl4:3); machine frame, offsets and tool\r\n"
+                           "rem lengths in the coordinates, run without a setup\r\n"
+                           "G90 G94 G17\r\n"
+                           "G00 X0 Y0 Z50\r\n"
+                           "G00 X10 Y10 G81 U2 Z-10 F100\r\n"
+                           "G00 X20 Y10 G81\r\n"
+                           "G80\r\n"
+                           "G00 X20 Y10 Z50\r\n"
+                           "M30\r\n");
+  EXPECT_EQ(r.err,
+            "gcx: note: C.wl4: kept as fms3000 cycles: drilling (C.wl4:4, 5); run out into motion: "
+            "variables (C.wl4:3); machine frame, offsets and tool lengths in the coordinates, run "
+            "without a setup\n"
+            "gcx: C.wl4 -> C.fms: verified, moves the tool like the source within 0.001 mm\n");
+}
+
+// A peck cycle is no single drilled hole: it is run out into its motion, and the note says so.
+TEST_F(TranslateCycles, APeckCycleIsRunOutWithItsLineInTheNote) {
+  write("P.nct", "G90 G0 X0 Y0 Z50\n"
+                 "G98 G83 X10 Y10 R2 Z-10 Q4 F100\n"
+                 "G80\n"
+                 "M30\n");
+  const CliResult r = gcx("translate P.nct --to fms3000 -o P.fms");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("P.fms"), "rem translated from P.nct (nct) by gcx\r\n"
+                           "rem run out into motion: cycles (P.nct:2): no single drilled\r\n"
+                           "rem hole that the target's cycles take; machine frame, offsets\r\n"
+                           "rem and tool lengths in the coordinates, run without a setup\r\n"
+                           "G90 G94 G17\r\n"
+                           "G00 X0 Y0 Z50\r\n"
+                           "G00 X10 Y10 Z50\r\n"
+                           "G00 X10 Y10 Z2\r\n"
+                           "G01 X10 Y10 Z-2 F100\r\n"
+                           "G00 X10 Y10 Z2\r\n"
+                           "G00 X10 Y10 Z-1\r\n"
+                           "G01 X10 Y10 Z-6 F100\r\n"
+                           "G00 X10 Y10 Z2\r\n"
+                           "G00 X10 Y10 Z-5\r\n"
+                           "G01 X10 Y10 Z-10 F100\r\n"
+                           "G00 X10 Y10 Z50\r\n"
+                           "M30\r\n");
+  EXPECT_EQ(r.err,
+            "gcx: note: P.nct: run out into motion: cycles (P.nct:2): no single drilled hole that "
+            "the target's cycles take; machine frame, offsets and tool lengths in the coordinates, "
+            "run without a setup\n"
+            "gcx: P.nct -> P.fms: verified, moves the tool like the source within 0.001 mm\n");
+}
+
+// FMS-3000 I60 above the initial level 50: NCT returns to the initial level or R only.
+TEST_F(TranslateCycles, AnExitNctCannotReturnToIsRunOutWithWhy) {
+  write("E.fms", "G90 G00 X0 Y0 Z50\n"
+                 "X10 Y10 G81 U2 Z-10 I60 F100\n"
+                 "G80\n"
+                 "M30\n");
+  const CliResult r = gcx("translate E.fms --to nct -o E.nct");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("E.nct"), "O1\n"
+                           "(translated from E.fms [fms3000] by gcx)\n"
+                           "(run out into motion: the drilling cycle at E.fms:2: NCT)\n"
+                           "(leaves a hole at its initial level or at R, not at Z60;)\n"
+                           "(machine frame, offsets and tool lengths in the coordinates,)\n"
+                           "(run without a setup)\n"
+                           "G90 G94 G17 G21\n"
+                           "G0 X0 Y0 Z50\n"
+                           "G0 X10 Y10 Z50\n"
+                           "G0 X10 Y10 Z2\n"
+                           "G1 X10 Y10 Z-10 F100\n"
+                           "G0 X10 Y10 Z2\n"
+                           "G0 X10 Y10 Z60\n"
+                           "M30\n");
+  EXPECT_EQ(r.err,
+            "gcx: note: E.fms: run out into motion: the drilling cycle at E.fms:2: NCT leaves a "
+            "hole at its initial level or at R, not at Z60; machine frame, offsets and tool "
+            "lengths in the coordinates, run without a setup\n"
+            "gcx: E.fms -> E.nct: verified, moves the tool like the source within 0.001 mm\n");
+}
+
+// --expand cycles: today's flat motion; --verify is the default, named.
+TEST_F(TranslateCycles, ExpandCyclesRunsEveryCycleOutAndVerifyIsTheDefaultNamed) {
+  write("A.nct", kNctHoles);
+  const CliResult r = gcx("translate A.nct --to wl4 --expand cycles,loops --verify -o X.wl4");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("X.wl4"), "%A\n"
+                           "$translated from A.nct (nct) by gcx\n"
+                           "$run out into motion: cycles (A.nct:2, 4) (--expand cycles);\n"
+                           "$machine frame, offsets and tool lengths in the coordinates,\n"
+                           "$run without a setup\n"
+                           "G90 G94 G17\n"
+                           "G0 X0 Y0 Z50\n"
+                           "G0 X10 Y10 Z50\n"
+                           "G0 X10 Y10 Z2\n"
+                           "G1 X10 Y10 Z-10 F100\n"
+                           "G0 X10 Y10 Z2\n"
+                           "G0 X20 Y10 Z2\n"
+                           "G1 X20 Y10 Z-10 F100\n"
+                           "G0 X20 Y10 Z2\n"
+                           "G0 X30 Y10 Z2\n"
+                           "G1 X30 Y10 Z-10 F100\n"
+                           "G4 E0.5\n"
+                           "G0 X30 Y10 Z50\n"
+                           "M30\n"
+                           "%\n");
+  EXPECT_EQ(r.err,
+            "gcx: note: A.nct: run out into motion: cycles (A.nct:2, 4) (--expand cycles); machine "
+            "frame, offsets and tool lengths in the coordinates, run without a setup\n"
+            "gcx: A.nct -> X.wl4: verified, moves the tool like the source within 0.001 mm\n");
+}
+
+// NCT G85 (feed out at F) is FMS-3000 G82 without H; G98 is I at the initial level.
+TEST_F(TranslateCycles, Fms3000Spec_5_2_NctG85BecomesG82WithTheFeedOutAtF) {
+  write("D.nct", kNctBores);
+  const CliResult r = gcx("translate D.nct --to fms3000 -o D.fms");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("D.fms"), "rem translated from D.nct (nct) by gcx\r\n"
+                           "rem kept as fms3000 cycles: boring with feed out (D.nct:2, 3);\r\n"
+                           "rem machine frame, offsets and tool lengths in the coordinates,\r\n"
+                           "rem run without a setup\r\n"
+                           "G90 G94 G17\r\n"
+                           "G00 X0 Y0 Z50\r\n"
+                           "G00 X10 Y10 G82 U2 Z-10 I50 F100\r\n"
+                           "G00 X20 Y10 G82\r\n"
+                           "G80\r\n"
+                           "M30\r\n");
+  EXPECT_EQ(r.err,
+            "gcx: note: D.nct: kept as fms3000 cycles: boring with feed out (D.nct:2, 3); machine "
+            "frame, offsets and tool lengths in the coordinates, run without a setup\n"
+            "gcx: D.nct -> D.fms: verified, moves the tool like the source within 0.001 mm\n");
+}
+
+// NCT G85 to WL4 %85, feeding out to #2; G98 again G80 and a rapid after each hole.
+TEST_F(TranslateCycles, Wl4Spec_5_2_NctG85BecomesPercent85) {
+  write("D.nct", kNctBores);
+  const CliResult r = gcx("translate D.nct --to wl4 -o D.wl4");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("D.wl4"), "%D\n"
+                           "$translated from D.nct (nct) by gcx\n"
+                           "$kept as wl4 cycles: boring with feed out (D.nct:2, 3);\n"
+                           "$machine frame, offsets and tool lengths in the coordinates,\n"
+                           "$run without a setup\n"
+                           "G90 G94 G17\n"
+                           "G0 X0 Y0 Z50\n"
+                           "#2=2 #3=-10\n"
+                           "G85 G0 X10 Y10 F100\n"
+                           "G80\n"
+                           "G0 Z50\n"
+                           "G85 G0 X20 Y10 F100\n"
+                           "G80\n"
+                           "G0 Z50\n"
+                           "M30\n"
+                           "%\n");
+  EXPECT_EQ(r.err,
+            "gcx: note: D.nct: kept as wl4 cycles: boring with feed out (D.nct:2, 3); machine "
+            "frame, offsets and tool lengths in the coordinates, run without a setup\n"
+            "gcx: D.nct -> D.wl4: verified, moves the tool like the source within 0.001 mm\n");
+}
+
+// The line of report.csv that names `program`, from its reason on (seconds and RSS vary).
+std::string reportTail(const std::string& csv, const std::string& program) {
+  const std::size_t at = csv.find("\n" + program + ",");
+  if (at == std::string::npos) return "missing";
+  std::string line = csv.substr(at + 1, csv.find('\n', at + 1) - at - 1);
+  for (int cell = 0; cell < 6; ++cell)
+    line = line.substr(line.find(',') + 1);
+  return line;
+}
+
+// A batch reports per program what its translation kept and what it ran out.
+TEST_F(TranslateCycles, ABatchReportsTheKeptAndExpandedStructures) {
+  write("in/A.nct", "G90 G0 X0 Y0 Z50\nG99 G81 X10 Y10 R2 Z-10 F100\nX20\nG80\nM30\n");
+  write("in/P.nct", "G90 G0 X0 Y0 Z50\nG98 G83 X10 Y10 R2 Z-10 Q4 F100\nG80\nM30\n");
+  const CliResult r = gcx("translate in --to fms3000 -o out --jobs 2");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  const std::string csv = read("out/report.csv");
+  EXPECT_EQ(reportTail(csv, "A.nct"), ",\"drilling (A.nct:2, 3)\",");
+  EXPECT_EQ(reportTail(csv, "P.nct"),
+            ",,cycles (P.nct:2): no single drilled hole that the target's cycles take");
+  EXPECT_NE(read("out/report.html").find("<td></td><td>drilling (A.nct:2, 3)</td><td></td></tr>"),
+            std::string::npos);
+}
+
+// An unknown --expand word is a usage error before anything runs.
+TEST_F(TranslateCycles, ExpandRejectsAWordItDoesNotKnow) {
+  write("A.nct", kNctHoles);
+  const CliResult r = gcx("translate A.nct --to wl4 --expand cycles,macros -o A.wl4");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.err, "--expand: 'macros' is none of cycles, subprograms, loops, variables, all\n"
+                   "Run with --help for more information.\n");
+}
+
+} // namespace
+} // namespace gcx::test
