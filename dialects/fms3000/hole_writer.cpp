@@ -1,9 +1,9 @@
-// A hole as `G00 X Y G81 U Z [I] [E] F` (fms3000.md §5.1-§5.2): the words before the cycle
-// code position the tool, the words after it are the cycle's levels, U the start of the feed, Z
-// the bottom, I the exit (absent: the tool stays at U), E the dwell in tenths of a second, G82's
-// H the feed out. The same cycle remembers every parameter not written (§5.1), so a later hole
-// writes only what changed; each hole restates its cycle code, so nothing depends on which
-// cycles N3023 repeats modally. G80 ends the run before any other block.
+// A hole as `G00 X Y G81 U Z [I] [E] F` (fms3000.md §5.1-§5.2), G83 with V W for pecks: the words
+// before the cycle code position the tool, the words after it are the cycle's levels, U the start
+// of the feed, Z the bottom, I the exit (absent: the tool stays at U), E the dwell in tenths of a
+// second, G82's H the feed out. The same cycle remembers every parameter not written (§5.1), so a
+// later hole writes only what changed; each hole restates its cycle code, so nothing depends on
+// which cycles N3023 repeats modally. G80 ends the run before any other block.
 #include "dialects/fms3000/hole_writer.h"
 
 #include <cmath>
@@ -22,7 +22,9 @@ using xlate::Hole;
 using xlate::HoleKind;
 
 cycles::LevelCycle levelCycle(HoleKind k) {
-  return k == HoleKind::BoreFeedOut ? cycles::LevelCycle::BoreFeedExit : cycles::LevelCycle::Drill;
+  return k == HoleKind::BoreFeedOut ? cycles::LevelCycle::BoreFeedExit
+         : k == HoleKind::Peck      ? cycles::LevelCycle::DeepDrill
+                                    : cycles::LevelCycle::Drill;
 }
 
 // E: the dwell in the dialect's unit (tenths of a second), nullopt when not a whole number
@@ -46,6 +48,10 @@ public:
     std::map<char, double> want{{'U', h.r}, {'Z', h.bottom}, {'F', h.feed}};
     if (!xlate::sameWritten(out, h.exit, h.r)) want['I'] = h.exit;
     if (h.kind == HoleKind::DrillDwell) want['E'] = *dwellUnits(h, out);
+    if (h.kind == HoleKind::Peck) { // G83: V each peck, W the clearance (§5.2)
+      want['V'] = h.peck;
+      want['W'] = h.clearance;
+    }
     if (h.kind == HoleKind::BoreFeedOut && !xlate::sameWritten(out, h.retractFeed, h.feed))
       want['H'] = h.retractFeed;
     if (cycle_ != cycle) memory_.clear(); // another cycle forgets every parameter
@@ -61,7 +67,7 @@ public:
     if (const std::optional<int> c =
             xlate::gcodeFor(out.profile(), GAction::LevelDrillCycle, static_cast<int>(cycle)))
       out.writeCode('G', *c);
-    for (const char letter : {'U', 'Z', 'I', 'E', 'H', 'F'}) {
+    for (const char letter : {'U', 'Z', 'I', 'V', 'W', 'E', 'H', 'F'}) {
       const auto w = want.find(letter);
       if (w == want.end()) continue;
       const auto m = memory_.find(letter);

@@ -18,8 +18,8 @@ using xlate::BlockOut;
 using xlate::Hole;
 using xlate::HoleKind;
 
-// The stock programs by meaning (§5.2): %81 drills, %82 dwells #4 s at the bottom, %85 feeds
-// out to #2 at the feed in.
+// The stock programs by meaning (§5.2): %81 drills, %82 dwells #4 s at the bottom, %83 pecks #5
+// deep, %85 feeds out to #2 at the feed in.
 int cycleProgram(HoleKind k) {
   switch (k) {
   case HoleKind::Drill:
@@ -28,11 +28,14 @@ int cycleProgram(HoleKind k) {
     return 82;
   case HoleKind::BoreFeedOut:
     return 85;
+  case HoleKind::Peck:
+    return 83;
   }
   return 81;
 }
 constexpr int kCancel10 = 800; // G80 (§2.1)
-constexpr int kLevelR = 2, kBottom = 3, kDwell = 4;
+constexpr int kLevelR = 2, kBottom = 3, kDwell = 4, kPeck = 5;
+constexpr double kPeckClearance = 1; // %83 starts each peck 1 mm above the last (§5.2)
 
 class HoleWriter : public xlate::HoleLowering {
 public:
@@ -40,12 +43,16 @@ public:
     if (h.kind == HoleKind::BoreFeedOut && !xlate::sameWritten(out, h.retractFeed, h.feed))
       return fmt::format("WL4 %85 feeds out at the feed in, not F{}",
                          motion::formatDecimal(h.retractFeed, 3));
+    if (h.kind == HoleKind::Peck && !xlate::sameWritten(out, h.clearance, kPeckClearance))
+      return fmt::format("WL4 %83 starts each peck 1 mm above the last depth, not {} mm",
+                         motion::formatDecimal(out.rounded(h.clearance), 4));
     return std::nullopt;
   }
 
   void write(const Hole& h, BlockOut& out) override {
     std::map<int, double> want{{kLevelR, h.r}, {kBottom, h.bottom}};
     if (h.kind == HoleKind::DrillDwell) want[kDwell] = h.dwell;
+    if (h.kind == HoleKind::Peck) want[kPeck] = h.peck;
     bool assigned = false;
     for (const auto& [var, value] : want) {
       const auto m = vars_.find(var);

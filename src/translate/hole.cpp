@@ -1,6 +1,7 @@
 #include "translate/hole.h"
 
 #include <cmath>
+#include <vector>
 
 namespace gcx::xlate {
 
@@ -59,6 +60,8 @@ std::string_view holeKindName(HoleKind k) {
     return "drilling with dwell";
   case HoleKind::BoreFeedOut:
     return "boring with feed out";
+  case HoleKind::Peck:
+    return "peck drilling";
   }
   return "drilling";
 }
@@ -90,13 +93,44 @@ HoleMatch matchHole(std::span<const Event> events, bool complete, const Event* b
   h.bottom = events[i].end.z();
   h.feed = events[i].feed;
   if (++i == n) return m.status = incomplete, m;
+  // pecks (NCT G83, FMS-3000 G83, WL4 %83): back to R, a rapid down to the last depth plus a
+  // clearance, the next feed down
+  std::vector<double> depths{h.bottom};
+  while (events[i].kind == Kind::Rapid && alongZ(events[i]) && same(events[i].end.z(), h.r)) {
+    if (i + 1 == n && !complete) return m.status = HoleMatch::NeedMore, m;
+    if (i + 1 == n) break;
+    const Event& down = events[i + 1];
+    if (down.kind != Kind::Rapid || !alongZ(down) || down.end.z() > h.r - kEps ||
+        down.end.z() < h.bottom + kEps)
+      break; // the way out
+    if (i + 2 == n && !complete) return m.status = HoleMatch::NeedMore, m;
+    if (i + 2 == n) break;
+    const Event& feed = events[i + 2];
+    const double clearance = down.end.z() - h.bottom;
+    if (!plainFeed(feed) || feed.end.z() > h.bottom - kEps || !same(feed.feed, h.feed) ||
+        (h.clearance > 0 && !same(clearance, h.clearance)))
+      break;
+    h.clearance = clearance;
+    h.bottom = feed.end.z();
+    depths.push_back(h.bottom);
+    if ((i += 3) == n) return m.status = incomplete, m;
+  }
+  if (depths.size() > 1) { // equal pecks from R, the last one to the bottom
+    h.peck = h.r - depths.front();
+    for (std::size_t k = 0; k + 1 < depths.size(); ++k)
+      if (!same(depths[k], h.r - h.peck * static_cast<double>(k + 1))) return m;
+    if (depths.back() < h.r - h.peck * static_cast<double>(depths.size()) - kEps) return m;
+  }
   if (events[i].kind == Kind::Dwell && !events[i].perRevolution) {
     h.dwell = events[i].value;
     if (++i == n) return m.status = incomplete, m;
   }
   const Event& out = events[i];
   if (!alongZ(out) || out.end.z() < h.r - kEps) return m;
-  if (out.kind == Kind::Rapid) {
+  if (depths.size() > 1) {
+    if (out.kind != Kind::Rapid || h.dwell > 0) return m;
+    h.kind = HoleKind::Peck;
+  } else if (out.kind == Kind::Rapid) {
     h.kind = h.dwell > 0 ? HoleKind::DrillDwell : HoleKind::Drill;
   } else if (plainFeed(out) && same(out.end.z(), h.r) && h.dwell == 0) {
     h.kind = HoleKind::BoreFeedOut;

@@ -203,16 +203,102 @@ TEST_F(TranslateCycles, Fms3000Spec_5_1_Wl4CallsOfPercent81BecomeG81U) {
             "gcx: C.wl4 -> C.fms: verified, moves the tool like the source within 0.001 mm\n");
 }
 
-// A peck cycle is no single drilled hole: it is run out into its motion, and the note says so.
-TEST_F(TranslateCycles, APeckCycleIsRunOutWithItsLineInTheNote) {
+// NCT G83 Q4 (clearance 1 mm, the setting): FMS-3000 G83 V4 W1, the G98 return as I.
+TEST_F(TranslateCycles, Fms3000Spec_5_2_NctG83PecksBecomeG83WithVAndW) {
   write("P.nct", "G90 G0 X0 Y0 Z50\n"
                  "G98 G83 X10 Y10 R2 Z-10 Q4 F100\n"
+                 "X20\n"
                  "G80\n"
                  "M30\n");
   const CliResult r = gcx("translate P.nct --to fms3000 -o P.fms");
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(read("P.fms"), "rem translated from P.nct (nct) by gcx\r\n"
-                           "rem run out into motion: cycles (P.nct:2): no single drilled\r\n"
+                           "rem kept as fms3000 cycles: peck drilling (P.nct:2, 3); machine\r\n"
+                           "rem frame, offsets and tool lengths in the coordinates, run\r\n"
+                           "rem without a setup\r\n"
+                           "G90 G94 G17\r\n"
+                           "G00 X0 Y0 Z50\r\n"
+                           "G00 X10 Y10 G83 U2 Z-10 I50 V4 W1 F100\r\n"
+                           "G00 X20 Y10 G83\r\n"
+                           "G80\r\n"
+                           "M30\r\n");
+  EXPECT_EQ(r.err,
+            "gcx: note: P.nct: kept as fms3000 cycles: peck drilling (P.nct:2, 3); machine frame, "
+            "offsets and tool lengths in the coordinates, run without a setup\n"
+            "gcx: P.nct -> P.fms: verified, moves the tool like the source within 0.001 mm\n");
+}
+
+// FMS-3000 G83 with W1 is WL4 %83, which starts each peck 1 mm above the last: #5 the peck.
+TEST_F(TranslateCycles, Wl4Spec_5_2_Fms3000G83BecomesPercent83WithThePeckInHash5) {
+  write("Q.fms", "G90 G00 X0 Y0 Z50\n"
+                 "X10 Y10 G83 U2 Z-10 V4 W1 F100\n"
+                 "G80\n"
+                 "M30\n");
+  const CliResult r = gcx("translate Q.fms --to wl4 -o Q.wl4");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("Q.wl4"), "%Q\n"
+                           "$translated from Q.fms (fms3000) by gcx\n"
+                           "$kept as wl4 cycles: peck drilling (Q.fms:2); machine frame,\n"
+                           "$offsets and tool lengths in the coordinates, run without a\n"
+                           "$setup\n"
+                           "G90 G94 G17\n"
+                           "G0 X0 Y0 Z50\n"
+                           "#2=2 #3=-10 #5=4\n"
+                           "G83 G0 X10 Y10 F100\n"
+                           "G80\n"
+                           "M30\n"
+                           "%\n");
+  EXPECT_EQ(r.err,
+            "gcx: note: Q.fms: kept as wl4 cycles: peck drilling (Q.fms:2); machine frame, offsets "
+            "and tool lengths in the coordinates, run without a setup\n"
+            "gcx: Q.fms -> Q.wl4: verified, moves the tool like the source within 0.001 mm\n");
+}
+
+// A clearance of 0.5 mm has no %83: the hole is run out, the note says why.
+TEST_F(TranslateCycles, Wl4Spec_5_2_APeckWithAnotherClearanceIsRunOutWithWhy) {
+  write("R.nct", "G90 G0 X0 Y0 Z50\n"
+                 "G99 G83 X10 Y10 R2 Z-10 Q4 E0.5 F100\n"
+                 "G80\n"
+                 "M30\n");
+  const CliResult r = gcx("translate R.nct --to wl4 -o R.wl4");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("R.wl4"), "%R\n"
+                           "$translated from R.nct (nct) by gcx\n"
+                           "$run out into motion: the peck drilling cycle at R.nct:2: WL4\n"
+                           "$%83 starts each peck 1 mm above the last depth, not 0.5 mm;\n"
+                           "$machine frame, offsets and tool lengths in the coordinates,\n"
+                           "$run without a setup\n"
+                           "G90 G94 G17\n"
+                           "G0 X0 Y0 Z50\n"
+                           "G0 X10 Y10 Z50\n"
+                           "G0 X10 Y10 Z2\n"
+                           "G1 X10 Y10 Z-2 F100\n"
+                           "G0 X10 Y10 Z2\n"
+                           "G0 X10 Y10 Z-1.5\n"
+                           "G1 X10 Y10 Z-6 F100\n"
+                           "G0 X10 Y10 Z2\n"
+                           "G0 X10 Y10 Z-5.5\n"
+                           "G1 X10 Y10 Z-10 F100\n"
+                           "G0 X10 Y10 Z2\n"
+                           "M30\n"
+                           "%\n");
+  EXPECT_EQ(r.err,
+            "gcx: note: R.nct: run out into motion: the peck drilling cycle at R.nct:2: WL4 %83 "
+            "starts each peck 1 mm above the last depth, not 0.5 mm; machine frame, offsets and "
+            "tool lengths in the coordinates, run without a setup\n"
+            "gcx: R.nct -> R.wl4: verified, moves the tool like the source within 0.001 mm\n");
+}
+
+// NCT G73 backs off by a little, not to R: no single drilled hole that the target takes.
+TEST_F(TranslateCycles, AChipBreakingCycleIsRunOutWithItsLineInTheNote) {
+  write("H.nct", "G90 G0 X0 Y0 Z50\n"
+                 "G98 G73 X10 Y10 R2 Z-10 Q4 F100\n"
+                 "G80\n"
+                 "M30\n");
+  const CliResult r = gcx("translate H.nct --to fms3000 -o H.fms");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("H.fms"), "rem translated from H.nct (nct) by gcx\r\n"
+                           "rem run out into motion: cycles (H.nct:2): no single drilled\r\n"
                            "rem hole that the target's cycles take; machine frame, offsets\r\n"
                            "rem and tool lengths in the coordinates, run without a setup\r\n"
                            "G90 G94 G17\r\n"
@@ -220,19 +306,55 @@ TEST_F(TranslateCycles, APeckCycleIsRunOutWithItsLineInTheNote) {
                            "G00 X10 Y10 Z50\r\n"
                            "G00 X10 Y10 Z2\r\n"
                            "G01 X10 Y10 Z-2 F100\r\n"
-                           "G00 X10 Y10 Z2\r\n"
-                           "G00 X10 Y10 Z-1\r\n"
+                           "G00 X10 Y10 Z-1.5\r\n"
                            "G01 X10 Y10 Z-6 F100\r\n"
-                           "G00 X10 Y10 Z2\r\n"
-                           "G00 X10 Y10 Z-5\r\n"
+                           "G00 X10 Y10 Z-5.5\r\n"
                            "G01 X10 Y10 Z-10 F100\r\n"
                            "G00 X10 Y10 Z50\r\n"
                            "M30\r\n");
   EXPECT_EQ(r.err,
-            "gcx: note: P.nct: run out into motion: cycles (P.nct:2): no single drilled hole that "
+            "gcx: note: H.nct: run out into motion: cycles (H.nct:2): no single drilled hole that "
             "the target's cycles take; machine frame, offsets and tool lengths in the coordinates, "
             "run without a setup\n"
-            "gcx: P.nct -> P.fms: verified, moves the tool like the source within 0.001 mm\n");
+            "gcx: H.nct -> H.fms: verified, moves the tool like the source within 0.001 mm\n");
+}
+
+// NCT G83 whose clearance E2 exceeds the peck: the rapid goes back above R; the cycle is run out
+// whole, not its first peck taken for a hole.
+TEST_F(TranslateCycles, APeckWhoseRapidRisesAboveRIsRunOutWhole) {
+  write("K.nct", "G90 G0 X0 Y0 Z50\n"
+                 "G99 G83 X10 Y10 R2 Z-3 Q1.5 E2 F100\n"
+                 "G80\n"
+                 "M30\n");
+  const CliResult r = gcx("translate K.nct --to wl4 -o K.wl4");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("K.wl4"), "%K\n"
+                           "$translated from K.nct (nct) by gcx\n"
+                           "$run out into motion: cycles (K.nct:2): no single drilled\n"
+                           "$hole that the target's cycles take; machine frame, offsets\n"
+                           "$and tool lengths in the coordinates, run without a setup\n"
+                           "G90 G94 G17\n"
+                           "G0 X0 Y0 Z50\n"
+                           "G0 X10 Y10 Z50\n"
+                           "G0 X10 Y10 Z2\n"
+                           "G1 X10 Y10 Z0.5 F100\n"
+                           "G0 X10 Y10 Z2\n"
+                           "G0 X10 Y10 Z2.5\n"
+                           "G1 X10 Y10 Z-1 F100\n"
+                           "G0 X10 Y10 Z2\n"
+                           "G0 X10 Y10 Z1\n"
+                           "G1 X10 Y10 Z-2.5 F100\n"
+                           "G0 X10 Y10 Z2\n"
+                           "G0 X10 Y10 Z-0.5\n"
+                           "G1 X10 Y10 Z-3 F100\n"
+                           "G0 X10 Y10 Z2\n"
+                           "M30\n"
+                           "%\n");
+  EXPECT_EQ(r.err,
+            "gcx: note: K.nct: run out into motion: cycles (K.nct:2): no single drilled hole that "
+            "the target's cycles take; machine frame, offsets and tool lengths in the coordinates, "
+            "run without a setup\n"
+            "gcx: K.nct -> K.wl4: verified, moves the tool like the source within 0.001 mm\n");
 }
 
 // FMS-3000 I60 above the initial level 50: NCT returns to the initial level or R only.
@@ -356,7 +478,7 @@ std::string reportTail(const std::string& csv, const std::string& program) {
 // A batch reports per program what its translation kept and what it ran out.
 TEST_F(TranslateCycles, ABatchReportsTheKeptAndExpandedStructures) {
   write("in/A.nct", "G90 G0 X0 Y0 Z50\nG99 G81 X10 Y10 R2 Z-10 F100\nX20\nG80\nM30\n");
-  write("in/P.nct", "G90 G0 X0 Y0 Z50\nG98 G83 X10 Y10 R2 Z-10 Q4 F100\nG80\nM30\n");
+  write("in/P.nct", "G90 G0 X0 Y0 Z50\nG98 G73 X10 Y10 R2 Z-10 Q4 F100\nG80\nM30\n");
   const CliResult r = gcx("translate in --to fms3000 -o out --jobs 2");
   EXPECT_EQ(r.exitCode, 0) << r.err;
   const std::string csv = read("out/report.csv");
