@@ -1,9 +1,9 @@
-// A hole as `G00 X Y G81 U Z [I] [E] F` (fms3000.md §5.1-§5.2), G83 with V W for pecks: the words
-// before the cycle code position the tool, the words after it are the cycle's levels, U the start
-// of the feed, Z the bottom, I the exit (absent: the tool stays at U), E the dwell in tenths of a
-// second, G82's H the feed out. The same cycle remembers every parameter not written (§5.1), so a
-// later hole writes only what changed; each hole restates its cycle code, so nothing depends on
-// which cycles N3023 repeats modally. G80 ends the run before any other block.
+// A hole as `G00 X Y G81 U Z [I] [E] F` (fms3000.md §5.1-§5.2), G83 (pecks) and G86 (chip breaking)
+// with V W: the words before the cycle code position the tool, the words after it are the cycle's
+// levels, U the start of the feed, Z the bottom, I the exit (absent: the tool stays at U), E the
+// dwell in tenths of a second, G82's H the feed out. The same cycle remembers every parameter not
+// written (§5.1), so a later hole writes only what changed; each hole restates its cycle code, so
+// nothing depends on which cycles N3023 repeats modally. G80 ends the run before any other block.
 #include "dialects/fms3000/hole_writer.h"
 
 #include <cmath>
@@ -24,6 +24,7 @@ using xlate::HoleKind;
 cycles::LevelCycle levelCycle(HoleKind k) {
   return k == HoleKind::BoreFeedOut ? cycles::LevelCycle::BoreFeedExit
          : k == HoleKind::Peck      ? cycles::LevelCycle::DeepDrill
+         : k == HoleKind::ChipBreak ? cycles::LevelCycle::ChipBreakDrill
                                     : cycles::LevelCycle::Drill;
 }
 
@@ -51,6 +52,10 @@ public:
     if (h.kind == HoleKind::Peck) { // G83: V each peck, W the clearance (§5.2)
       want['V'] = h.peck;
       want['W'] = h.clearance;
+    }
+    if (h.kind == HoleKind::ChipBreak) { // G86: V each step, W the rapid back (§5.2)
+      want['V'] = h.peck;
+      want['W'] = h.backOff;
     }
     if (h.kind == HoleKind::BoreFeedOut && !xlate::sameWritten(out, h.retractFeed, h.feed))
       want['H'] = h.retractFeed;

@@ -1,7 +1,7 @@
-// A hole as `G98|G99 G81|G82|G83|G85 X Y R Z [P] [Q E] F` (nct.md §3, cycles.md §2): the cycle and
-// the return level are found by meaning in the profile; R, Z, P and F are modal in cycle mode, so a
-// later hole of the same cycle is `X Y` with only what changed. NCT leaves a hole at the initial
-// level registered when cycle mode began (G98) or at R (G99), nowhere else.
+// A hole as `G98|G99 G73|G81|G82|G83|G85 X Y R Z [P] [Q E] F` (nct.md §3, cycles.md §2): the cycle
+// and the return level are found by meaning in the profile; R, Z, P and F are modal in cycle mode,
+// so a later hole of the same cycle is `X Y` with only what changed. NCT leaves a hole at the
+// initial level registered when cycle mode began (G98) or at R (G99), nowhere else.
 #include "dialects/nct/hole_writer.h"
 
 #include <fmt/format.h>
@@ -27,6 +27,8 @@ cycles::DrillCycle drillCycle(HoleKind k) {
     return cycles::DrillCycle::BoreFeedOut;
   case HoleKind::Peck:
     return cycles::DrillCycle::PeckDrill;
+  case HoleKind::ChipBreak:
+    return cycles::DrillCycle::HighSpeedPeck;
   }
   return cycles::DrillCycle::Drill;
 }
@@ -46,8 +48,11 @@ public:
   void write(const Hole& h, BlockOut& out) override {
     if (run_ && !returnToR(h, run_->initial, out)) cancel(out); // a new initial level
     const bool fresh = !run_;
-    Run next{h.kind, false,      fresh ? h.start : run_->initial, h.r, h.bottom, h.feed, h.dwell,
-             h.peck, h.clearance};
+    // E: G83's clearance above the last depth, G73's back-off (cycles.md §2.4)
+    const bool pecks = h.kind == HoleKind::Peck || h.kind == HoleKind::ChipBreak;
+    const double e = h.kind == HoleKind::Peck ? h.clearance : h.backOff;
+    Run next{h.kind, false, fresh ? h.start : run_->initial, h.r, h.bottom, h.feed, h.dwell,
+             h.peck, e};
     next.toR = *returnToR(h, next.initial, out);
     if (fresh || next.toR != run_->toR)
       code(out, next.toR ? GAction::ReturnR : GAction::ReturnInitial);
@@ -64,11 +69,10 @@ public:
     if (h.kind == HoleKind::DrillDwell &&
         (fresh || run_->kind != h.kind || changed(h.dwell, run_->dwell)))
       out.writeValue("P", h.dwell);
-    // G83: Q each peck, E the clearance above the last depth (cycles.md §2.4)
-    if (h.kind == HoleKind::Peck && (fresh || run_->kind != h.kind || changed(h.peck, run_->peck) ||
-                                     changed(h.clearance, run_->clearance))) {
+    if (pecks &&
+        (fresh || run_->kind != h.kind || changed(h.peck, run_->peck) || changed(e, run_->e))) {
       out.writeValue("Q", h.peck);
-      out.writeValue("E", h.clearance);
+      out.writeValue("E", e);
     }
     if (changed(h.feed, run_ ? run_->feed : 0)) out.writeValue("F", h.feed);
     out.endBlock();
@@ -86,7 +90,7 @@ private:
   struct Run {
     HoleKind kind;
     bool toR;
-    double initial, r, bottom, feed, dwell, peck, clearance;
+    double initial, r, bottom, feed, dwell, peck, e;
   };
 
   // G99 when the hole ends at R, G98 when at `initial`; nullopt when elsewhere

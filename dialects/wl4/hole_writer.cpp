@@ -30,6 +30,8 @@ int cycleProgram(HoleKind k) {
     return 85;
   case HoleKind::Peck:
     return 83;
+  case HoleKind::ChipBreak:
+    return 0; // none of the stock programs backs off without leaving the hole
   }
   return 81;
 }
@@ -43,6 +45,8 @@ public:
     if (h.kind == HoleKind::BoreFeedOut && !xlate::sameWritten(out, h.retractFeed, h.feed))
       return fmt::format("WL4 %85 feeds out at the feed in, not F{}",
                          motion::formatDecimal(h.retractFeed, 3));
+    if (cycleProgram(h.kind) == 0)
+      return "WL4's stock programs %81-%89 have no chip-breaking cycle";
     if (h.kind == HoleKind::Peck && !xlate::sameWritten(out, h.clearance, kPeckClearance))
       return fmt::format("WL4 %83 starts each peck 1 mm above the last depth, not {} mm",
                          motion::formatDecimal(out.rounded(h.clearance), 4));

@@ -112,10 +112,19 @@ FlatAttempt planFlatMotion(const std::string& input, const TranslateTarget& targ
   }
   for (const std::string& what : keptOrder)
     kept.push_back(fmt::format("{} ({})", what, places(keptByKind[what], *sources)));
-  for (const emit::StructureNote& m : met)
-    if (!m.why.empty())
-      runOut.push_back(
-          fmt::format("the {} cycle at {}: {}", m.what, places({m.at}, *sources), m.why));
+  // the holes the target could not write, one entry per kind and reason
+  std::vector<std::pair<std::string, std::string>> refusedOrder;
+  std::map<std::pair<std::string, std::string>, std::vector<SourceLoc>> refused;
+  for (const emit::StructureNote& m : met) {
+    if (m.why.empty()) continue;
+    const std::pair<std::string, std::string> key{m.what, m.why};
+    if (!refused.count(key)) refusedOrder.push_back(key);
+    auto& lines = refused[key];
+    if (lines.empty() || !sameLine(lines.back(), m.at)) lines.push_back(m.at);
+  }
+  for (const auto& key : refusedOrder)
+    runOut.push_back(fmt::format("the {} cycle at {}: {}", key.first,
+                                 places(refused[key], *sources), key.second));
   // cycle blocks no hole came from (the runs may number the files apart: by name)
   std::vector<SourceLoc> other;
   for (std::size_t i = 0; i < cycles.size(); ++i) {

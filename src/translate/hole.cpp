@@ -62,6 +62,8 @@ std::string_view holeKindName(HoleKind k) {
     return "boring with feed out";
   case HoleKind::Peck:
     return "peck drilling";
+  case HoleKind::ChipBreak:
+    return "chip-breaking drilling";
   }
   return "drilling";
 }
@@ -115,6 +117,24 @@ HoleMatch matchHole(std::span<const Event> events, bool complete, const Event* b
     depths.push_back(h.bottom);
     if ((i += 3) == n) return m.status = incomplete, m;
   }
+  // chip breaking (NCT G73, FMS-3000 G86): a rapid back by a little, the next feed down
+  while (depths.size() == 1 || h.backOff > 0) {
+    const Event& back = events[i];
+    if (back.kind != Kind::Rapid || !alongZ(back) || back.end.z() < h.bottom + kEps ||
+        back.end.z() > h.r - kEps)
+      break;
+    if (i + 1 == n && !complete) return m.status = HoleMatch::NeedMore, m;
+    if (i + 1 == n) return m;
+    const Event& feed = events[i + 1];
+    const double backOff = back.end.z() - h.bottom;
+    if (!plainFeed(feed) || feed.end.z() > h.bottom - kEps || !same(feed.feed, h.feed) ||
+        (h.backOff > 0 && !same(backOff, h.backOff)))
+      return m;
+    h.backOff = backOff;
+    h.bottom = feed.end.z();
+    depths.push_back(h.bottom);
+    if ((i += 2) == n) return m.status = incomplete, m;
+  }
   if (depths.size() > 1) { // equal pecks from R, the last one to the bottom
     h.peck = h.r - depths.front();
     for (std::size_t k = 0; k + 1 < depths.size(); ++k)
@@ -129,7 +149,7 @@ HoleMatch matchHole(std::span<const Event> events, bool complete, const Event* b
   if (!alongZ(out) || out.end.z() < h.r - kEps) return m;
   if (depths.size() > 1) {
     if (out.kind != Kind::Rapid || h.dwell > 0) return m;
-    h.kind = HoleKind::Peck;
+    h.kind = h.backOff > 0 ? HoleKind::ChipBreak : HoleKind::Peck;
   } else if (out.kind == Kind::Rapid) {
     h.kind = h.dwell > 0 ? HoleKind::DrillDwell : HoleKind::Drill;
   } else if (plainFeed(out) && same(out.end.z(), h.r) && h.dwell == 0) {

@@ -18,9 +18,10 @@ enum class HoleKind : unsigned char {
   DrillDwell,  // the same with a dwell at the bottom
   BoreFeedOut, // feed to the bottom, feed back to the R level, rapid on to the exit
   Peck,        // equal pecks from R, back to R after each and down to a clearance above the last
+  ChipBreak,   // equal pecks from R, each after a short rapid back to break the chip
 };
 
-/// "drilling", "drilling with dwell", "boring with feed out", "peck drilling".
+/// "drilling", "drilling with dwell", "boring with feed out", "peck drilling", ...
 std::string_view holeKindName(HoleKind k);
 
 struct Hole {
@@ -35,6 +36,7 @@ struct Hole {
   double dwell = 0;        // DrillDwell: seconds at the bottom
   double peck = 0;         // Peck: the depth of each peck
   double clearance = 0;    // Peck: how far above the last depth the rapid down stops
+  double backOff = 0;      // ChipBreak: how far each rapid backs off
   bool positioned = false; // its first event is the rapid to x, y at `start`
   SourceLoc at;            // the block of the cycle (the call of WL4's %8n)
 };
@@ -48,7 +50,8 @@ struct HoleMatch {
 
 /// Whether `events` start with one hole of a drilling cycle: an optional rapid in the XY plane,
 /// an optional rapid down to R, one feed down (or equal pecks, each back to R and down again to
-/// a clearance above the last depth), an optional dwell, and a rapid (or feed) out,
+/// a clearance above the last depth, or each after a short rapid back), an optional dwell, and
+/// a rapid (or feed) out,
 /// all on one line in Z, from one cycle: one block, or one call of a cycle program (the
 /// provenance chain). Without `complete`, an answer that a later event could change is
 /// NeedMore. `before`: the event written just before, which must not belong to the same cycle

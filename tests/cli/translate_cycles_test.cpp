@@ -289,37 +289,97 @@ TEST_F(TranslateCycles, Wl4Spec_5_2_APeckWithAnotherClearanceIsRunOutWithWhy) {
             "gcx: R.nct -> R.wl4: verified, moves the tool like the source within 0.001 mm\n");
 }
 
-// NCT G73 backs off by a little, not to R: no single drilled hole that the target takes.
-TEST_F(TranslateCycles, AChipBreakingCycleIsRunOutWithItsLineInTheNote) {
+// NCT G73 backs off E (the setting, 0.5 mm) after each peck: FMS-3000 G86 V4 W0.5.
+TEST_F(TranslateCycles, Fms3000Spec_5_2_NctG73BecomesG86WithVAndW) {
   write("H.nct", "G90 G0 X0 Y0 Z50\n"
                  "G98 G73 X10 Y10 R2 Z-10 Q4 F100\n"
+                 "X20\n"
                  "G80\n"
                  "M30\n");
   const CliResult r = gcx("translate H.nct --to fms3000 -o H.fms");
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(read("H.fms"), "rem translated from H.nct (nct) by gcx\r\n"
-                           "rem run out into motion: cycles (H.nct:2): no single drilled\r\n"
-                           "rem hole that the target's cycles take; machine frame, offsets\r\n"
-                           "rem and tool lengths in the coordinates, run without a setup\r\n"
+                           "rem kept as fms3000 cycles: chip-breaking drilling (H.nct:2, 3);\r\n"
+                           "rem machine frame, offsets and tool lengths in the coordinates,\r\n"
+                           "rem run without a setup\r\n"
                            "G90 G94 G17\r\n"
                            "G00 X0 Y0 Z50\r\n"
-                           "G00 X10 Y10 Z50\r\n"
-                           "G00 X10 Y10 Z2\r\n"
-                           "G01 X10 Y10 Z-2 F100\r\n"
-                           "G00 X10 Y10 Z-1.5\r\n"
-                           "G01 X10 Y10 Z-6 F100\r\n"
-                           "G00 X10 Y10 Z-5.5\r\n"
-                           "G01 X10 Y10 Z-10 F100\r\n"
-                           "G00 X10 Y10 Z50\r\n"
+                           "G00 X10 Y10 G86 U2 Z-10 I50 V4 W0.5 F100\r\n"
+                           "G00 X20 Y10 G86\r\n"
+                           "G80\r\n"
                            "M30\r\n");
   EXPECT_EQ(r.err,
-            "gcx: note: H.nct: run out into motion: cycles (H.nct:2): no single drilled hole that "
-            "the target's cycles take; machine frame, offsets and tool lengths in the coordinates, "
-            "run without a setup\n"
+            "gcx: note: H.nct: kept as fms3000 cycles: chip-breaking drilling (H.nct:2, 3); "
+            "machine frame, offsets and tool lengths in the coordinates, run without a setup\n"
             "gcx: H.nct -> H.fms: verified, moves the tool like the source within 0.001 mm\n");
 }
 
-// NCT G83 whose clearance E2 exceeds the peck: the rapid goes back above R; the cycle is run out
+// WL4 has no chip-breaking program among %81-%89: each hole is run out, the note says why once.
+TEST_F(TranslateCycles, Wl4Spec_5_2_AChipBreakingCycleIsRunOutWithWhy) {
+  write("H.nct", "G90 G0 X0 Y0 Z50\n"
+                 "G98 G73 X10 Y10 R2 Z-10 Q4 F100\n"
+                 "X20\n"
+                 "G80\n"
+                 "M30\n");
+  const CliResult r = gcx("translate H.nct --to wl4 -o H.wl4");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("H.wl4"), "%H\n"
+                           "$translated from H.nct (nct) by gcx\n"
+                           "$run out into motion: the chip-breaking drilling cycle at\n"
+                           "$H.nct:2, 3: WL4's stock programs %81-%89 have no\n"
+                           "$chip-breaking cycle; machine frame, offsets and tool lengths\n"
+                           "$in the coordinates, run without a setup\n"
+                           "G90 G94 G17\n"
+                           "G0 X0 Y0 Z50\n"
+                           "G0 X10 Y10 Z50\n"
+                           "G0 X10 Y10 Z2\n"
+                           "G1 X10 Y10 Z-2 F100\n"
+                           "G0 X10 Y10 Z-1.5\n"
+                           "G1 X10 Y10 Z-6 F100\n"
+                           "G0 X10 Y10 Z-5.5\n"
+                           "G1 X10 Y10 Z-10 F100\n"
+                           "G0 X10 Y10 Z50\n"
+                           "G0 X20 Y10 Z50\n"
+                           "G0 X20 Y10 Z2\n"
+                           "G1 X20 Y10 Z-2 F100\n"
+                           "G0 X20 Y10 Z-1.5\n"
+                           "G1 X20 Y10 Z-6 F100\n"
+                           "G0 X20 Y10 Z-5.5\n"
+                           "G1 X20 Y10 Z-10 F100\n"
+                           "G0 X20 Y10 Z50\n"
+                           "M30\n"
+                           "%\n");
+  EXPECT_EQ(r.err,
+            "gcx: note: H.nct: run out into motion: the chip-breaking drilling cycle at H.nct:2, "
+            "3: WL4's stock programs %81-%89 have no chip-breaking cycle; machine frame, offsets "
+            "and tool lengths in the coordinates, run without a setup\n"
+            "gcx: H.nct -> H.wl4: verified, moves the tool like the source within 0.001 mm\n");
+}
+
+// FMS-3000 G86 V4 W0.5 without I ends at U: NCT G99 G73 Q4 E0.5.
+TEST_F(TranslateCycles, CyclesSpec_2_4_Fms3000G86BecomesG73WithQAndE) {
+  write("G.fms", "G90 G00 X0 Y0 Z50\n"
+                 "X10 Y10 G86 U2 Z-10 V4 W0.5 F100\n"
+                 "G80\n"
+                 "M30\n");
+  const CliResult r = gcx("translate G.fms --to nct -o G.nct");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("G.nct"), "O1\n"
+                           "(translated from G.fms [fms3000] by gcx)\n"
+                           "(kept as nct cycles: chip-breaking drilling [G.fms:2];)\n"
+                           "(machine frame, offsets and tool lengths in the coordinates,)\n"
+                           "(run without a setup)\n"
+                           "G90 G94 G17 G21\n"
+                           "G0 X0 Y0 Z50\n"
+                           "G99 G73 X10 Y10 R2 Z-10 Q4 E0.5 F100\n"
+                           "G80\n"
+                           "M30\n");
+  EXPECT_EQ(r.err,
+            "gcx: note: G.fms: kept as nct cycles: chip-breaking drilling (G.fms:2); machine "
+            "frame, offsets and tool lengths in the coordinates, run without a setup\n"
+            "gcx: G.fms -> G.nct: verified, moves the tool like the source within 0.001 mm\n");
+}
+
 // whole, not its first peck taken for a hole.
 TEST_F(TranslateCycles, APeckWhoseRapidRisesAboveRIsRunOutWhole) {
   write("K.nct", "G90 G0 X0 Y0 Z50\n"
@@ -478,7 +538,7 @@ std::string reportTail(const std::string& csv, const std::string& program) {
 // A batch reports per program what its translation kept and what it ran out.
 TEST_F(TranslateCycles, ABatchReportsTheKeptAndExpandedStructures) {
   write("in/A.nct", "G90 G0 X0 Y0 Z50\nG99 G81 X10 Y10 R2 Z-10 F100\nX20\nG80\nM30\n");
-  write("in/P.nct", "G90 G0 X0 Y0 Z50\nG98 G73 X10 Y10 R2 Z-10 Q4 F100\nG80\nM30\n");
+  write("in/P.nct", "G90 G0 X0 Y0 Z50\nG99 G83 X10 Y10 R2 Z-3 Q1.5 E2 F100\nG80\nM30\n");
   const CliResult r = gcx("translate in --to fms3000 -o out --jobs 2");
   EXPECT_EQ(r.exitCode, 0) << r.err;
   const std::string csv = read("out/report.csv");
