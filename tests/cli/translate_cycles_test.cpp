@@ -549,6 +549,54 @@ TEST_F(TranslateCycles, ABatchReportsTheKeptAndExpandedStructures) {
             std::string::npos);
 }
 
+// To its own dialect --expand cycles writes the flat motion in the machine frame, as across
+// dialects.
+TEST_F(TranslateCycles, ExpandCyclesToTheSameDialectWritesTheFlatMotion) {
+  write("S.nct", "G90 G0 X0 Y0 Z50\n"
+                 "G99 G81 X10 Y10 R2 Z-10 F100\n"
+                 "G80\n"
+                 "M30\n");
+  const CliResult r = gcx("translate S.nct --to nct --expand cycles -o S2.nct");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("S2.nct"), "O1\n"
+                            "(translated from S.nct [nct] by gcx)\n"
+                            "(run out into motion: cycles [S.nct:2] [--expand cycles];)\n"
+                            "(machine frame, offsets and tool lengths in the coordinates,)\n"
+                            "(run without a setup)\n"
+                            "G90 G94 G17 G21\n"
+                            "G0 X0 Y0 Z50\n"
+                            "G0 X10 Y10 Z50\n"
+                            "G0 X10 Y10 Z2\n"
+                            "G1 X10 Y10 Z-10 F100\n"
+                            "G0 X10 Y10 Z2\n"
+                            "M30\n");
+  EXPECT_EQ(r.err,
+            "gcx: note: S.nct: run out into motion: cycles (S.nct:2) (--expand cycles); machine "
+            "frame, offsets and tool lengths in the coordinates, run without a setup\n"
+            "gcx: S.nct -> S2.nct: verified, moves the tool like the source within 0.001 mm\n");
+}
+
+// WL4 to WL4 prints the program as written; --expand runs it out through the expansion instead.
+TEST_F(TranslateCycles, ExpandToWl4ItselfRunsTheProgramOutInsteadOfPrintingIt) {
+  write("W.wl4", "%W\n"
+                 "G90 G0 X0 Y0 Z5\n"
+                 "#1=2\n"
+                 "G1 X#1 F100\n"
+                 "M30\n"
+                 "%\n");
+  const CliResult r = gcx("translate W.wl4 --to wl4 --expand loops -o W2.wl4");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("W2.wl4"), "%MAIN\n"
+                            "G90 G0 X0 Y0 Z5\n"
+                            "G1 X2 F100\n"
+                            "M30\n"
+                            "%\n");
+  EXPECT_EQ(r.err,
+            "gcx: note: W.wl4: cycles, subprograms, loops, variables and modal calls expanded into "
+            "the blocks they run\n"
+            "gcx: W.wl4 -> W2.wl4: verified, moves the tool like the source within 0.001 mm\n");
+}
+
 // An unknown --expand word is a usage error before anything runs.
 TEST_F(TranslateCycles, ExpandRejectsAWordItDoesNotKnow) {
   write("A.nct", kNctHoles);
