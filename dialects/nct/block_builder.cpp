@@ -154,7 +154,10 @@ ir::Word& BlockBuilder::newWord(std::string_view address, std::size_t pos, std::
     ++words_;
   }
   ir::Word& w = *slot;
-  w.address.assign(address);
+  if (address.size() == 1 && w.address.size() == 1)
+    w.address[0] = address[0]; // the usual case of a reused word: one letter for another
+  else
+    w.address.assign(address);
   w.range = range(pos, len);
   w.order = static_cast<std::uint32_t>(pos);
   return w;
