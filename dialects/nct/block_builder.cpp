@@ -1,5 +1,6 @@
 #include "dialects/nct/block_builder.h"
 
+#include <cmath>
 #include <fmt/format.h>
 
 #include "diag/codes.h"
@@ -42,8 +43,9 @@ bool wholeNumber(std::string_view digits, std::int64_t& value) {
   return true;
 }
 
-BlockBuilder::BlockBuilder(const front::RawBlock& raw, ir::Block& out, diag::Engine& diags)
-    : raw_(raw), out_(out), diags_(diags) {
+BlockBuilder::BlockBuilder(const front::RawBlock& raw, ir::Block& out, diag::Engine& diags,
+                           bool reuseWords)
+    : raw_(raw), out_(out), diags_(diags), reuse_(reuseWords) {
   // reset field by field: clearing keeps the vectors' capacity for the next block
   out_.kind = ir::BlockKind::Normal;
   out_.skipLevel = 0;
@@ -51,7 +53,7 @@ BlockBuilder::BlockBuilder(const front::RawBlock& raw, ir::Block& out, diag::Eng
   out_.sequenceText.clear();
   out_.sequenceRange = {};
   out_.programName.clear();
-  out_.words.clear();
+  if (!reuse_) out_.words.clear();
   out_.stmts.clear();
   out_.comments.clear();
   out_.range = SourceRange{raw.begin, static_cast<std::uint32_t>(raw.text.size())};
@@ -117,9 +119,45 @@ ir::Stmt& BlockBuilder::newStmt(ir::StmtKind kind, std::size_t pos, std::size_t 
   return s;
 }
 
+namespace {
+bool isDefault(const ir::Expr& e) {
+  return e.kind == ir::ExprKind::Number && e.op == ir::Op::Add && e.func == ir::Func::Sin &&
+         !e.prmHasBit && !e.prmHasIndex && e.number == 0 && !std::signbit(e.number) &&
+         e.name.empty() && e.args.empty() && e.range.begin.file == 0 && e.range.begin.line == 0 &&
+         e.range.begin.col == 0 && e.range.begin.offset == 0 && e.range.length == 0;
+}
+
+// A word of an earlier block made equal to a new ir::Word, keeping its strings' storage.
+void resetWord(ir::Word& w) {
+  w.incremental = false;
+  w.kind = ir::ValueKind::Number;
+  w.number = 0;
+  w.text.clear();
+  if (!isDefault(w.expr)) w.expr = ir::Expr{};
+  w.axisIndex.clear();
+}
+} // namespace
+
+void BlockBuilder::finish() {
+  if (reuse_) out_.words.resize(words_);
+}
+
 ir::Word& BlockBuilder::newWord(std::string_view address, std::size_t pos, std::size_t len) {
-  ir::Word& w = out_.words.emplace_back();
-  w.address.assign(address);
+  ir::Word* slot;
+  if (!reuse_) {
+    slot = &out_.words.emplace_back();
+  } else if (words_ < out_.words.size()) {
+    slot = &out_.words[words_++];
+    resetWord(*slot);
+  } else {
+    slot = &out_.words.emplace_back();
+    ++words_;
+  }
+  ir::Word& w = *slot;
+  if (address.size() == 1 && w.address.size() == 1)
+    w.address[0] = address[0]; // the usual case of a reused word: one letter for another
+  else
+    w.address.assign(address);
   w.range = range(pos, len);
   w.order = static_cast<std::uint32_t>(pos);
   return w;
@@ -134,6 +172,16 @@ void BlockBuilder::literalWord(std::string_view address, std::size_t pos, std::s
   const std::size_t numPos = pos + len - digits.size();
   double v = number(digits, numPos);
   w.number = negative ? -v : v;
+  if (signText) w.text.push_back(signText);
+  w.text.append(digits);
+}
+
+void BlockBuilder::literalWord(char letter, std::size_t pos, std::size_t len, bool incremental,
+                               char signText, std::string_view digits, double value) {
+  ir::Word& w = newWord(std::string_view(&letter, 1), pos, len);
+  w.incremental = incremental;
+  w.kind = ir::ValueKind::Number;
+  w.number = signText == '-' ? -value : value;
   if (signText) w.text.push_back(signText);
   w.text.append(digits);
 }

@@ -12,7 +12,13 @@ namespace gcx::nct {
 
 class BlockBuilder {
 public:
-  BlockBuilder(const front::RawBlock& raw, ir::Block& out, diag::Engine& diags);
+  /// reuseWords: out's words are overwritten in place rather than destroyed and built again
+  /// (the fast path, one block after another into the same ir::Block); finish() then drops
+  /// those left over. Only for a builder that never reads out's words while it builds.
+  BlockBuilder(const front::RawBlock& raw, ir::Block& out, diag::Engine& diags,
+               bool reuseWords = false);
+  /// Ends a block built with reuseWords.
+  void finish();
 
   /// `/` or `/n` at pos; digits empty for a bare `/`.
   void skip(std::size_t pos, std::size_t len, std::string_view digits);
@@ -23,6 +29,10 @@ public:
   /// An address with a literal number: `X-40`, `XI-40`, `G84.2`; sign is '-', '+' or 0 (none).
   void literalWord(std::string_view address, std::size_t pos, std::size_t len, bool incremental,
                    char sign, std::string_view digits);
+  /// The same, for digits of at most 15 digits whose value the caller computed exactly (the
+  /// same double front::decimalValue gives): such a number never has too many digits.
+  void literalWord(char letter, std::size_t pos, std::size_t len, bool incremental, char sign,
+                   std::string_view digits, double value);
   /// A comment whose '(' is at pos and ')' at pos+len-1.
   void comment(std::size_t pos, std::size_t len);
 
@@ -43,6 +53,8 @@ private:
   ir::Block& out_;
   diag::Engine& diags_;
   bool ok_ = true;
+  bool reuse_ = false;
+  std::size_t words_ = 0; // with reuse_: words of this block so far
 };
 
 /// Whole units of a number token such as "0012" or "12.": false if it has a fraction.

@@ -1,6 +1,7 @@
 #include "dialects/nct/fast_parser.h"
 
 #include <array>
+#include <cstdint>
 
 namespace gcx::nct {
 
@@ -16,6 +17,8 @@ struct Piece {
   std::uint32_t len;
   std::uint32_t digitsPos;
   std::uint32_t digitsLen;
+  double value; // Word: the digits' value, when exact (see exact)
+  bool exact;   // Word: at most 15 digits, value set
 };
 
 Piece newPiece(Piece::Kind kind, std::size_t pos) {
@@ -25,6 +28,8 @@ Piece newPiece(Piece::Kind kind, std::size_t pos) {
   p.incremental = false;
   p.pos = static_cast<std::uint32_t>(pos);
   p.len = p.digitsPos = p.digitsLen = 0;
+  p.value = 0;
+  p.exact = false;
   return p;
 }
 
@@ -41,17 +46,36 @@ bool isLetter(char c) {
   return c >= 'A' && c <= 'Z';
 }
 
-// Scans a NUMBER token (grammar/NCT.g4): DIGIT+ ('.' DIGIT*)? | '.' DIGIT+
-bool scanNumber(const std::string& s, std::size_t& i) {
+// 10^0 .. 10^15: exact doubles
+constexpr double kPowersOfTen[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                   1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+
+// Scans a NUMBER token (grammar/NCT.g4): DIGIT+ ('.' DIGIT*)? | '.' DIGIT+, and reads its value
+// on the way when it has at most 15 digits (exact: then true). The value is front::decimalValue's
+// (Clinger's fast path: a mantissa below 10^15 and a power of ten up to 10^15 are exact doubles,
+// and one division of exact operands is correctly rounded), and so many digits are never too
+// many significant ones (nct.md §1.2 rule 2).
+bool scanNumber(const std::string& s, std::size_t& i, double& value, bool& exact) {
   const std::size_t start = i;
+  std::uint64_t mantissa = 0;
   while (i < s.size() && isDigit(s[i]))
-    ++i;
+    mantissa = mantissa * 10 + static_cast<std::uint64_t>(s[i++] - '0');
+  std::size_t digits = i - start, fraction = 0;
   if (i < s.size() && s[i] == '.') {
     ++i;
     const std::size_t frac = i;
+    while (i < s.size() && isDigit(s[i]) && digits + (i - frac) <= 15)
+      mantissa = mantissa * 10 + static_cast<std::uint64_t>(s[i++] - '0');
     while (i < s.size() && isDigit(s[i]))
       ++i;
     if (frac == start + 1 && i == frac) return false; // a lone '.'
+    fraction = i - frac;
+    digits += fraction;
+  }
+  exact = digits <= 15;
+  if (exact) {
+    const double m = static_cast<double>(mantissa);
+    value = fraction > 0 ? m / kPowersOfTen[fraction] : m;
   }
   return i > start;
 }
@@ -91,7 +115,9 @@ FastResult parseFast(const front::RawBlock& raw, ir::Block& out, diag::Engine& d
     skipBlanks();
     std::size_t d = i;
     if (i < n && (isDigit(s[i]) || s[i] == '.')) {
-      if (!scanNumber(s, i)) return FastResult::Declined;
+      double unused = 0;
+      bool exact = false;
+      if (!scanNumber(s, i, unused, exact)) return FastResult::Declined;
       p.digitsPos = static_cast<std::uint32_t>(d);
       p.digitsLen = static_cast<std::uint32_t>(i - d);
     }
@@ -124,7 +150,8 @@ FastResult parseFast(const front::RawBlock& raw, ir::Block& out, diag::Engine& d
       skipBlanks();
     }
     const std::size_t d = i;
-    if (i >= n || !(isDigit(s[i]) || s[i] == '.') || !scanNumber(s, i)) return FastResult::Declined;
+    if (i >= n || !(isDigit(s[i]) || s[i] == '.') || !scanNumber(s, i, p.value, p.exact))
+      return FastResult::Declined;
     p.digitsPos = static_cast<std::uint32_t>(d);
     p.digitsLen = static_cast<std::uint32_t>(i - d);
     p.len = static_cast<std::uint32_t>(i - p.pos);
@@ -135,7 +162,7 @@ FastResult parseFast(const front::RawBlock& raw, ir::Block& out, diag::Engine& d
     if (!push(p)) return FastResult::Declined;
   }
 
-  BlockBuilder b(raw, out, diags);
+  BlockBuilder b(raw, out, diags, true);
   for (std::size_t k = 0; k < count; ++k) {
     const Piece& p = pieces[k];
     std::string_view digits(s.data() + p.digitsPos, p.digitsLen);
@@ -150,10 +177,14 @@ FastResult parseFast(const front::RawBlock& raw, ir::Block& out, diag::Engine& d
       b.comment(p.pos, p.len);
       break;
     case Piece::Word:
-      b.literalWord(std::string_view(&p.letter, 1), p.pos, p.len, p.incremental, p.sign, digits);
+      if (p.exact)
+        b.literalWord(p.letter, p.pos, p.len, p.incremental, p.sign, digits, p.value);
+      else
+        b.literalWord(std::string_view(&p.letter, 1), p.pos, p.len, p.incremental, p.sign, digits);
       break;
     }
   }
+  b.finish();
   return b.ok() ? FastResult::Parsed : FastResult::Failed;
 }
 

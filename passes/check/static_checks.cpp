@@ -82,7 +82,7 @@ void StaticChecker::words(const ir::Block& b) {
   counts.clear();
   auto countOf = [&](std::string_view a) -> int& {
     for (auto& [addr, n] : counts)
-      if (addr == a) return n;
+      if (addr.size() == a.size() && (a.size() == 1 ? addr[0] == a[0] : addr == a)) return n;
     counts.emplace_back(a, 0);
     return counts.back().second;
   };

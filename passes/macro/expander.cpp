@@ -47,17 +47,34 @@ bool Expander::fail(const char* code, const SourceRange& where, std::string mess
 
 motion::Provenance Expander::provenance(const ir::Block& b) const {
   motion::Provenance p;
+  fillProvenance(b, p);
+  return p;
+}
+
+void Expander::fillProvenance(const ir::Block& b, motion::Provenance& p) const {
   p.at = b.range.begin;
+  std::size_t n = 0;
+  auto next = [&]() -> motion::Frame& {
+    if (n == p.chain.size()) p.chain.emplace_back();
+    return p.chain[n++];
+  };
   for (std::size_t i = 0; i < stack_.size(); ++i) {
     const Frame& f = stack_[i];
-    if (i > 0) p.chain.push_back({f.callSite, f.what});
+    if (i > 0) {
+      motion::Frame& call = next();
+      call.call = f.callSite;
+      call.what = f.what;
+    }
     for (const Loop& l : f.loops) {
       const ir::Block& head = f.program->blocks[l.head];
-      p.chain.push_back({head.range.begin, fmt::format("loop DO{} iteration {}",
-                                                       head.stmts.front().loopId, l.iteration)});
+      motion::Frame& loop = next();
+      loop.call = head.range.begin;
+      loop.what.clear(); // "loop DO1 iteration 3"
+      fmt::format_to(std::back_inserter(loop.what), "loop DO{} iteration {}",
+                     head.stmts.front().loopId, l.iteration);
     }
   }
-  return p;
+  p.chain.resize(n);
 }
 
 bool Expander::run(const LoadedProgram& main) {
@@ -118,29 +135,40 @@ bool Expander::step() {
   return ncBlock(f, b);
 }
 
-// One pass over the bytes, in bounded chunks: a table folds case and picks the bytes that may
-// start a marker, so a plain CAM program costs one table lookup per byte.
+// One pass over the bytes, in bounded chunks: a table of the raw bytes that may start a marker
+// (case folded in), then a bitmap of the folded byte pairs that start one, so a plain CAM program
+// costs one table lookup per byte and a marker's full compare runs only where its first two
+// letters stand (a `G1` is not the start of `G65`).
 bool mayNeedExpansion(const std::string& path, const Profile& profile) {
   if (!profile.controlFlow) return false;
   const std::vector<std::string>& markers = profile.controlFlow->expansionMarkers;
   std::array<unsigned char, 256> fold{};
   for (unsigned c = 0; c < 256; ++c)
     fold[c] = static_cast<unsigned char>(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
-  // per folded byte: 1 ends the scan ('#', '[': an expression only the expansion pass
-  // evaluates), 2 may start a marker; the markers by their folded first byte, so a byte is
-  // compared only with the markers it can start
+  // per raw byte: 1 ends the scan ('#', '[': an expression only the expansion pass evaluates;
+  // a one-letter marker), 2 may start a longer marker
   std::array<unsigned char, 256> interest{};
   interest['#'] = interest['['] = 1;
+  std::array<std::uint64_t, 1024> pairs{}; // bit (first << 8 | second), both folded
   std::array<std::vector<const std::string*>, 256> byFirst;
   std::size_t longest = 1;
   for (const std::string& m : markers)
     if (!m.empty()) {
       const unsigned char first = fold[static_cast<unsigned char>(m[0])];
-      interest[first] |= 2;
       byFirst[first].push_back(&m);
       longest = std::max(longest, m.size());
+      if (m.size() > 1) {
+        const unsigned pair = first << 8 | fold[static_cast<unsigned char>(m[1])];
+        pairs[pair / 64] |= std::uint64_t{1} << (pair % 64);
+      }
+      for (unsigned c = 0; c < 256; ++c)
+        if (fold[c] == first) interest[c] |= m.size() == 1 ? 1 : 2;
     }
   auto markerAt = [&](const std::string& text, std::size_t i) {
+    if (i + 1 >= text.size()) return false; // a one-letter marker ended the scan already
+    const unsigned pair = fold[static_cast<unsigned char>(text[i])] << 8 |
+                          fold[static_cast<unsigned char>(text[i + 1])];
+    if (!((pairs[pair / 64] >> (pair % 64)) & 1)) return false;
     for (const std::string* m : byFirst[fold[static_cast<unsigned char>(text[i])]]) {
       if (i + m->size() > text.size()) continue;
       std::size_t k = 1;
@@ -163,8 +191,9 @@ bool mayNeedExpansion(const std::string& path, const Profile& profile) {
     const bool last = got < kChunk;
     // a marker that may run past the chunk waits for the next one
     const std::size_t scanEnd = last ? text.size() : text.size() - (longest - 1);
+    const auto* bytes = reinterpret_cast<const unsigned char*>(text.data());
     for (std::size_t i = 0; i < scanEnd; ++i) {
-      const unsigned char k = interest[fold[static_cast<unsigned char>(text[i])]];
+      const unsigned char k = interest[bytes[i]];
       if (k == 0) continue;
       if (k & 1) return true;
       if (markerAt(text, i)) return true;

@@ -73,6 +73,8 @@ private:
   bool step();
   bool endOfProgram(const Frame& f);
   motion::Provenance provenance(const ir::Block& b) const;
+  /// provenance(b) written into p, whose storage is reused: one per executed block.
+  void fillProvenance(const ir::Block& b, motion::Provenance& p) const;
   bool fail(const char* code, const SourceRange& where, std::string message);
   ParameterLookup parameters() const;
   const ControlFlow& flow() const { return flow_; }
@@ -163,6 +165,10 @@ private:
   std::function<void(const ir::Block&)> onFlat_;
   bool done_ = false;
   bool remapped_ = false; // the block flatten saw last may hold a remapped code
+  // ncBlock's flat block and the provenance of the block being executed: members, so that
+  // their storage serves every block (ncBlock does not nest)
+  ir::Block flat_;
+  motion::Provenance here_;
 };
 
 /// True if a program file may need the expansion pass (the dialect's expansion markers, or a

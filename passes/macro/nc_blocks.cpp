@@ -81,10 +81,25 @@ WordOptions Expander::scanRemaps(const ir::Block& b) {
   return opt;
 }
 
+// Everything of b but its words, which flatten resolves one by one: copying them first would
+// copy every expression tree only to drop it.
+void copyAllButWords(const ir::Block& b, ir::Block& flat) {
+  flat.kind = b.kind;
+  flat.skipLevel = b.skipLevel;
+  flat.sequence = b.sequence;
+  flat.sequenceText = b.sequenceText;
+  flat.sequenceRange = b.sequenceRange;
+  flat.programName = b.programName;
+  flat.words.clear();
+  flat.stmts = b.stmts;
+  flat.comments = b.comments;
+  flat.range = b.range;
+  flat.lastLine = b.lastLine;
+}
+
 bool Expander::flatten(const ir::Block& b, ir::Block& flat) {
   // resolve every value; vacant bare references drop their word (§2.5 rule 4)
-  flat = b;
-  flat.words.clear();
+  copyAllButWords(b, flat);
   const WordOptions opt = scanRemaps(b);
   for (const ir::Word& w : b.words)
     if (!resolveWord(w, opt, flat)) return false;
@@ -96,8 +111,24 @@ bool Expander::resolveWord(const ir::Word& w, const WordOptions& opt, ir::Block&
     flat.words.push_back(w);
     return true;
   }
+  if (w.address != "AX") {
+    WordValue v = wordValue(w, eval_, opt);
+    if (v.result == WordResult::Error) return false;
+    if (v.result == WordResult::Dropped) return true;
+    // the word with its value in place of its expression, whose tree is not copied
+    ir::Word& resolved = flat.words.emplace_back();
+    resolved.address = w.address;
+    resolved.incremental = w.incremental;
+    resolved.kind = ir::ValueKind::Number;
+    resolved.order = w.order;
+    resolved.number = v.number;
+    resolved.text = w.text;
+    resolved.axisIndex = w.axisIndex;
+    resolved.range = w.range;
+    return true;
+  }
   ir::Word resolved = w;
-  if (w.address == "AX") { // AX[n]=v: the axis by its number in the channel (§2.6)
+  { // AX[n]=v: the axis by its number in the channel (§2.6)
     auto n = eval_.number(w.axisIndex.front());
     if (!n) return false;
     const long k = std::lround(*n);
@@ -150,9 +181,8 @@ bool Expander::runNcPart(const ir::Block& b, ir::Block nc, bool& stopped) {
 }
 
 bool Expander::ncBlock(Frame& f, const ir::Block& b) {
-  ir::Block flat;
-  if (!flatten(b, flat)) return false;
-  return ncFlat(f, b, flat);
+  if (!flatten(b, flat_)) return false;
+  return ncFlat(f, b, flat_);
 }
 
 bool Expander::ncFlat(Frame& f, const ir::Block& b, ir::Block& flat) {
@@ -226,7 +256,8 @@ bool Expander::ncFlat(Frame& f, const ir::Block& b, ir::Block& flat) {
 
 bool Expander::execute(Frame& f, const ir::Block& b, const ir::Block& flat) {
   if (onFlat_) onFlat_(flat);
-  if (!machine_.execute(flat, provenance(b))) {
+  fillProvenance(b, here_);
+  if (!machine_.execute(flat, here_)) {
     if (machine_.ended()) {
       done_ = true;
       return true;

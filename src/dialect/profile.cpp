@@ -10,6 +10,11 @@ void Profile::index() {
     const std::string& a = addresses[i].address;
     if (a.size() == 1 && a[0] >= 'A' && a[0] <= 'Z') letters_[a[0] - 'A'] = static_cast<int>(i + 1);
   }
+  wholeGCodes_.fill(0);
+  for (std::size_t i = gcodes.size(); i-- > 0;) // the first row of a code wins, as in gcode()
+    if (const int t = gcodes[i].code10; t >= 0 && t % 10 == 0 && t / 10 < 256)
+      wholeGCodes_[static_cast<std::size_t>(t / 10)] = static_cast<int>(i + 1);
+  indexed_ = true;
 }
 
 const AddressSpec* Profile::address(std::string_view a) const {
@@ -29,6 +34,8 @@ const CycleMacro* Profile::cycleMacro(std::int64_t program) const {
 }
 
 std::optional<int> gcodeTenths(double value) {
+  if (value >= 0 && value <= 1e6 && value == static_cast<int>(value)) // a whole code: no rounding
+    return static_cast<int>(value) * 10;
   const double t = value * 10.0;
   const double r = std::round(t);
   if (std::fabs(t - r) > 1e-6 || r < 0 || r > 1e7) return std::nullopt;
@@ -36,6 +43,10 @@ std::optional<int> gcodeTenths(double value) {
 }
 
 const GCodeSpec* Profile::gcode(double value) const {
+  if (indexed_ && value >= 0 && value < 256 && value == static_cast<int>(value)) {
+    const int slot = wholeGCodes_[static_cast<std::size_t>(value)];
+    return slot ? &gcodes[static_cast<std::size_t>(slot - 1)] : nullptr;
+  }
   auto t = gcodeTenths(value);
   if (!t) return nullptr;
   for (const GCodeSpec& g : gcodes)

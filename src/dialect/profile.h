@@ -201,6 +201,9 @@ struct Profile {
 
 private:
   std::array<int, 26> letters_{}; // index+1 into addresses of single letters (0: none)
+  // index+1 into gcodes of the whole codes G0-G255 (0: none), the codes of nearly every block
+  std::array<int, 256> wholeGCodes_{};
+  bool indexed_ = false;
 };
 
 /// G code value as an integer number of tenths, if it has at most one decimal (G84.2 -> 842).

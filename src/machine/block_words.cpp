@@ -10,9 +10,7 @@ bool BlockWords::hasAxisWord() const {
   return false;
 }
 
-const ir::Word* BlockWords::findAction(GAction a) const {
-  const auto bit = static_cast<unsigned>(a);
-  if (!((actionBits[bit / 64] >> (bit % 64)) & 1u)) return nullptr;
+const ir::Word* BlockWords::findPresentAction(GAction a) const {
   for (std::size_t i = 0; i < gCodes.size(); ++i)
     if (gCodes[i] && gCodes[i]->action == a) return gWords[i];
   return nullptr;

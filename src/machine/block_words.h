@@ -33,8 +33,16 @@ struct BlockWords {
 
   bool hasAxisWord() const;
   /// The G code of this block with the given action, or null.
-  const ir::Word* findAction(GAction a) const;
+  /// Inline: the interpreter asks for dozens of actions per block, and most are absent.
+  const ir::Word* findAction(GAction a) const {
+    const auto bit = static_cast<unsigned>(a);
+    if (!((actionBits[bit / 64] >> (bit % 64)) & 1u)) return nullptr;
+    return findPresentAction(a);
+  }
   bool has(GAction a) const { return findAction(a) != nullptr; }
+
+private:
+  const ir::Word* findPresentAction(GAction a) const;
 };
 
 /// Sorts the words; returns the first word that is not a literal (to be reported), or null.

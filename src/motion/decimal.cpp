@@ -14,23 +14,43 @@ constexpr std::uint64_t kPow10Int[] = {1,      10,      100,      1000,      100
 
 // v scaled to `decimals` places and rounded as an integer, when that integer is certainly the
 // correctly rounded value to_chars prints. Below 1e12 the product v * 10^d is within 1.2e-4 of
-// the exact one, so unless it lies within 1e-3 of a half both round to the same integer.
+// the exact one, so unless it lies within 1e-3 of a half both round to the same integer. The
+// whole part by truncation and the fraction by subtraction are exact below 2^52, and inline
+// (std::floor and std::llround are library calls at the default instruction set).
 bool scaledInteger(double v, int decimals, std::int64_t& out) {
   if (decimals < 0 || decimals > 9) return false;
   const double scaled = v * kPow10[decimals];
   if (!(std::fabs(scaled) < 1e12)) return false;
-  const double frac = scaled - std::floor(scaled);
-  if (std::fabs(frac - 0.5) < 1e-3) return false;
-  out = std::llround(scaled);
+  const auto whole = static_cast<std::int64_t>(scaled);    // toward zero
+  const double frac = scaled - static_cast<double>(whole); // (-1, 1), the sign of scaled
+  const double away = std::fabs(frac);
+  if (std::fabs(away - 0.5) < 1e-3) return false;
+  out = away < 0.5 ? whole : whole + (frac < 0 ? -1 : 1);
   return true;
 }
 
+// "00" "01" ... "99": two digits per step
+constexpr char kDigitPairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233"
+    "34353637383940414243444546474849505152535455565758596061626364656667"
+    "6869707172737475767778798081828384858687888990919293949596979899";
+
 // Digits of n, most significant first, into the end of buf; returns the first digit.
 char* writeDigits(std::uint64_t n, char* end) {
-  do {
-    *--end = static_cast<char>('0' + n % 10);
-    n /= 10;
-  } while (n != 0);
+  while (n >= 100) {
+    const std::uint64_t pair = n % 100;
+    n /= 100;
+    end -= 2;
+    end[0] = kDigitPairs[2 * pair];
+    end[1] = kDigitPairs[2 * pair + 1];
+  }
+  if (n >= 10) {
+    end -= 2;
+    end[0] = kDigitPairs[2 * n];
+    end[1] = kDigitPairs[2 * n + 1];
+    return end;
+  }
+  *--end = static_cast<char>('0' + n);
   return end;
 }
 
@@ -41,14 +61,15 @@ void appendScaled(std::string& out, std::int64_t r, int decimals) {
   std::uint64_t m = r < 0 ? static_cast<std::uint64_t>(-r) : static_cast<std::uint64_t>(r);
   std::uint64_t frac = m % kPow10Int[decimals];
   const std::uint64_t whole = m / kPow10Int[decimals];
-  int places = decimals;
-  while (places > 0 && frac % 10 == 0) { // trailing zeros are dropped
-    frac /= 10;
-    --places;
-  }
-  if (places > 0) {
-    for (int i = 0; i < places; ++i, frac /= 10)
-      *--p = static_cast<char>('0' + frac % 10);
+  if (frac != 0) {
+    int places = decimals;
+    while (frac % 10 == 0) { // trailing zeros are dropped
+      frac /= 10;
+      --places;
+    }
+    char* const digits = writeDigits(frac, p);
+    p -= places;
+    std::fill(p, digits, '0'); // the fraction's leading zeros
     *--p = '.';
   }
   p = writeDigits(whole, p);
