@@ -59,8 +59,9 @@ RemapTable remaps() {
   return t;
 }
 
-// G4 X (a dwell), G36 (home), G51 X-1 (mirror), G92 (set coordinates): axis words that are no
-// move, so no canned cycle runs after the block (§5.1)
+} // namespace
+
+// no canned cycle runs after such a block (§5.1), and it leaves #130-#135 alone (§6.2)
 bool axisWordsNoMove(const ir::Block& flat) {
   for (const ir::Word& w : flat.words)
     if (w.is('G') && w.isLiteral() &&
@@ -68,8 +69,6 @@ bool axisWordsNoMove(const ir::Block& flat) {
       return true;
   return false;
 }
-
-} // namespace
 
 bool isLabel(std::string_view sequenceText) {
   return sequenceText.size() > 1 && sequenceText[0] == '0';
