@@ -35,8 +35,9 @@ RemapTable remaps() {
     t.rows.push_back(cycle);
   }
   // G31, G70-G75, G77, G78: the block's axis words are the target of system program %1, which
-  // does all the moving, dispatched on #108 (§5.1, §5.3)
-  for (int g : {31, 70, 71, 72, 73, 74, 75, 77, 78}) {
+  // does all the moving, dispatched on #108 (§5.1, §5.3); G79 too, for which %1 has no section:
+  // it stops with "UNKNOWN CYCLE IN RANGE G70-G79"
+  for (int g : {31, 70, 71, 72, 73, 74, 75, 77, 78, 79}) {
     Remap open;
     open.address = "G";
     open.code = g;
