@@ -106,6 +106,7 @@ inline constexpr const char* SystemReadOnly = "GCX065"; // WL4 #100 and up are r
 inline constexpr const char* Wl4ThreadNotExpressible = "GCX066"; // G32/G33 phase, lead change
 inline constexpr const char* Wl4ReturnInMain = "GCX067";         // M99 in the main program
 inline constexpr const char* Wl4ProbeWithoutTouch = "GCXW24";    // G38: no probe model
+inline constexpr const char* CompWithoutPlaneMotion = "GCXW25";  // no plane motion under G41/G42
 
 // --- gcx: setup file (--setup FILE, src/machine/setup)
 inline constexpr const char* SetupNotJson = "GCX020";
