@@ -15,11 +15,10 @@ namespace gcx::machine {
 
 namespace {
 
-// A block without plane words moves in the plane only as an arc with a centre word there (a
-// full circle); a block without any word (only statements) is no block of the path.
+// A block without plane words moves in the plane only as an arc with a centre word there (a full
+// circle). Blocks of statements only never reach the machine.
 bool movesInPlane(const BlockWords& w, const motion::PlaneAxes& ax, bool arcMode, bool planeWords) {
-  if (planeWords || (arcMode && (w.ijk[ax.first] || w.ijk[ax.second]))) return true;
-  return std::ranges::none_of(w.letters, [](const ir::Word* x) { return x != nullptr; });
+  return planeWords || (arcMode && (w.ijk[ax.first] || w.ijk[ax.second]));
 }
 
 } // namespace

@@ -120,6 +120,18 @@ TEST(CompWl4_4_2, BlocksWithoutPlaneMotionWarn) {
       << r.rendered;
 }
 
+TEST(CompWl4_4_2, AFullCircleByItsCentreMovesInThePlane) {
+  // G2 with I alone has no plane word, yet it moves: no warning
+  MacroRun r = runWl4("%T\nG0 X-10 Y0\nG1 G41 D1 X0 Y0 F100\nG2 I10 J0\nG0 G40 X-10 Y0\nM2\n%\n",
+                      compSetup(5));
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_TRUE(r.warnings.empty()) << r.rendered;
+  // G41 on a clockwise circle: outside it, at 10 + 5
+  EXPECT_EQ(compMotion(r.motion()),
+            (V{"R -10,0,0", "L -5,0,0 F100", "CW -5,0,0 C10,0 r15 θ360", "R -10,0,0"}))
+      << r.rendered;
+}
+
 TEST(CompWl4_4_2, AContourThatMovesInEveryBlockDoesNotWarn) {
   MacroRun r = runWl4("%T\nG0 X-10 Y-10\nG1 G41 D1 X0 Y0 F100\nY20\nX20\nY0\nX0\n"
                       "G0 G40 X-10 Y-10\nM2\n%\n",
