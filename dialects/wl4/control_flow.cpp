@@ -35,8 +35,9 @@ RemapTable remaps() {
     t.rows.push_back(cycle);
   }
   // G31, G70-G75, G77, G78: the block's axis words are the target of system program %1, which
-  // does all the moving, dispatched on #108 (§5.1, §5.3)
-  for (int g : {31, 70, 71, 72, 73, 74, 75, 77, 78}) {
+  // does all the moving, dispatched on #108 (§5.1, §5.3); G79 too, for which %1 has no section:
+  // it stops with "UNKNOWN CYCLE IN RANGE G70-G79"
+  for (int g : {31, 70, 71, 72, 73, 74, 75, 77, 78, 79}) {
     Remap open;
     open.address = "G";
     open.code = g;
@@ -59,8 +60,9 @@ RemapTable remaps() {
   return t;
 }
 
-// G4 X (a dwell), G36 (home), G51 X-1 (mirror), G92 (set coordinates): axis words that are no
-// move, so no canned cycle runs after the block (§5.1)
+} // namespace
+
+// no canned cycle runs after such a block (§5.1), and it leaves #130-#135 alone (§6.2)
 bool axisWordsNoMove(const ir::Block& flat) {
   for (const ir::Word& w : flat.words)
     if (w.is('G') && w.isLiteral() &&
@@ -68,8 +70,6 @@ bool axisWordsNoMove(const ir::Block& flat) {
       return true;
   return false;
 }
-
-} // namespace
 
 bool isLabel(std::string_view sequenceText) {
   return sequenceText.size() > 1 && sequenceText[0] == '0';

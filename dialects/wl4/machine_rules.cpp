@@ -62,6 +62,8 @@ MachineRules machineRules() {
   // (0.01 mm [D]) is passed on an arc about the corner point, else at their intersection
   r.compensation.outerCornerArcs = true;
   r.compensation.arcGapLimit = 0.01;
+  // blocks without motion under compensation are "not recommended" (002:1397-1400): a warning
+  r.compensation.warnWithoutPlaneMotion = true;
   // B is a rotary axis, or with the setup's b_chamfer = 1 the automatic chamfer's leg (§3.16)
   r.contour.chamferAxis = 'B';
   r.contour.chamferAxisKey = "b_chamfer";

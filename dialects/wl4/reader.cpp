@@ -4,6 +4,7 @@
 
 #include "diag/codes.h"
 #include "dialects/wl4/block_parser.h"
+#include "dialects/wl4/block_rules.h"
 #include "dialects/wl4/control_flow.h"
 #include "dialects/wl4/fanuc_traps.h"
 #include "dialects/wl4/lexical_rules.h"
@@ -17,7 +18,7 @@ Reader::Reader(std::istream& in, FileId file, diag::Engine& diags,
 
 bool Reader::next(ir::Block& out) {
   while (bytes_.next(raw_)) {
-    if (raw_.failed || !parse(out) || duplicateLabel(out)) {
+    if (raw_.failed || !parse(out) || duplicateLabel(out) || !checkBlockRules(out, diags_)) {
       ++failed_;
       continue;
     }
@@ -36,7 +37,15 @@ bool Reader::parse(ir::Block& out) {
 bool Reader::duplicateLabel(const ir::Block& b) {
   if (b.kind == ir::BlockKind::ProgramStart) labels_.clear(); // labels are per program
   const bool label = b.sequence && isLabel(b.sequenceText);
-  if (!label || labels_.insert(*b.sequence).second) return false;
+  if (!label) return false;
+  if (labels_.insert(*b.sequence).second) {
+    if (labels_.size() <= 127) return false;
+    diags_.error(diag::code::Wl4TooManyLabels, b.sequenceRange,
+                 fmt::format("label {} is the 128th of this program: a program has at most 127 "
+                             "(wl4.md §1.8, 002:2020-2021)",
+                             *b.sequence));
+    return true;
+  }
   diags_.error(diag::code::Wl4DuplicateLabel, b.sequenceRange,
                fmt::format("label {} appears twice in this program (wl4.md §1.8)", *b.sequence));
   return true;

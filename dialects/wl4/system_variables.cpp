@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "diag/codes.h"
+#include "dialects/wl4/control_flow.h"
 #include "dialects/wl4/profile.h"
 #include "machine/settings.h"
 
@@ -63,8 +64,8 @@ std::optional<macro::Value> SystemVariables::read(int number, const SourceRange&
     return macro::Value::of(v[number % 10]);
   }
   if (number == 108 || (number >= 130 && number <= 140)) {
-    auto it = cycle_.find(number);
-    return macro::Value::of(it == cycle_.end() ? 0.0 : it->second);
+    auto it = last_.find(number);
+    return macro::Value::of(it == last_.end() ? 0.0 : it->second);
   }
   diags_.error(diag::code::SystemReadOnly, where,
                fmt::format("system variable #{} is not modelled by gcx (wl4.md §6.2)", number));
@@ -101,11 +102,32 @@ bool SystemVariables::openCycle(const ir::Block& flat, const ir::Word& code) {
                              cycle));
     return false;
   }
+  last_[108] = cycle;
+  takeTarget(flat);
+  // G31's I and P: omitted means 0 (002:2539-2541), not an earlier block's value (§10.11)
+  const ir::Word* i = flat.find('I');
+  const ir::Word* p = flat.find('P');
+  last_[136] = i ? i->number : 0;
+  last_[140] = p ? p->number : 0;
+  return true;
+}
+
+void SystemVariables::blockRuns(const ir::Block& flat) {
+  const char* centres = "IJK";
+  for (int a = 0; a < 3; ++a)
+    if (const ir::Word* w = flat.find(centres[a])) last_[136 + a] = w->number;
+  if (const ir::Word* p = flat.find('P')) last_[140] = p->number;
+  if (!axisWordsNoMove(flat) && (flat.find('X') || flat.find('Y') || flat.find('Z') ||
+                                 flat.find('U') || flat.find('V') || flat.find('W')))
+    takeTarget(flat);
+}
+
+void SystemVariables::takeTarget(const ir::Block& flat) {
   machine::Vec3 at = machine_.programPosition();
-  const bool incremental = machine_.state().incremental;
+  bool incremental = machine_.state().incremental;
+  for (const ir::Word& w : flat.words) // the block's own G90/G91 counts for its words
+    if (w.is('G') && (w.number == 90 || w.number == 91)) incremental = w.number == 91;
   if (machine_.state().diameterAxes & 1u) at[0] *= 2; // #130/#131 as the X words: diameters
-  cycle_.clear();
-  cycle_[108] = cycle;
   const char* absolute = "XYZ";
   const char* relative = "UVW";
   for (int a = 0; a < 3; ++a) {
@@ -113,12 +135,9 @@ bool SystemVariables::openCycle(const ir::Block& flat, const ir::Word& code) {
     if (const ir::Word* w = flat.find(absolute[a]))
       target = incremental ? at[a] + w->number : w->number;
     if (const ir::Word* w = flat.find(relative[a])) target = at[a] + w->number;
-    cycle_[130 + 2 * a] = target;         // #130 #132 #134: the target
-    cycle_[131 + 2 * a] = target - at[a]; // #131 #133 #135: the increment from here
+    last_[130 + 2 * a] = target;         // #130 #132 #134: the target
+    last_[131 + 2 * a] = target - at[a]; // #131 #133 #135: the increment from here
   }
-  if (const ir::Word* i = flat.find('I')) cycle_[136] = i->number;
-  if (const ir::Word* p = flat.find('P')) cycle_[140] = p->number;
-  return true;
 }
 
 } // namespace gcx::wl4

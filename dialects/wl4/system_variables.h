@@ -1,7 +1,7 @@
 // The WL4 system variables #100 and up (wl4.md §2.2, §6.2): read-only, answered from the
-// machine model, and the target of the last open-cycle block (G31, G70-G78), which the control
-// hands to %1 in #130-#140 (§5.1). gcx keeps #130-#140 for open-cycle blocks only: no program
-// of the manual reads them elsewhere.
+// machine model, and the words of the last blocks: #130-#135 the target and increments of the
+// last block with axis words (an open cycle's block included: the control hands them to %1,
+// §5.1), #136-#138 the last I J K, #140 the last P, #108 the last open cycle.
 #pragma once
 #include <map>
 
@@ -27,13 +27,18 @@ public:
     return std::nullopt;
   }
   void startMain(const std::string&) override {}
-  /// #108 the cycle, #130-#135 its target and increments, #136 I, #139 F, #140 P (§5.1).
+  /// #108 the cycle, #130-#135 its target and increments, #136 I, #140 P (§5.1).
   bool openCycle(const ir::Block& flat, const ir::Word& code) override;
+  /// #130-#135 for a block with axis words that move, #136-#138 I J K, #140 P (§6.2).
+  void blockRuns(const ir::Block& flat) override;
 
 private:
   machine::Interpreter& machine_;
+  /// #130-#135 from the block's X Y Z U V W (lathe X a diameter), before it runs.
+  void takeTarget(const ir::Block& flat);
+
   diag::Engine& diags_;
-  std::map<int, double> cycle_; // #108 and #130-#140 of the last open-cycle block
+  std::map<int, double> last_; // #108, #130-#138, #140
 };
 
 } // namespace gcx::wl4

@@ -135,6 +135,8 @@ private:
   /// A block with a message that jumps to itself: true after reporting the error its message
   /// names (ordered_blocks.cpp).
   bool errorStop(const Frame& f);
+  /// A literal M word of the profile's program stop (M0).
+  bool hasProgramStop(const ir::Block& b) const;
   /// FlowAction::CallOpenCycle (open_cycles.cpp).
   bool openCycleCall(Frame& f, const ir::Block& b, const ir::Block& flat, const CodeMatch& m);
 

@@ -174,6 +174,7 @@ bool Expander::runNcPart(const ir::Block& b, ir::Block nc, bool& stopped) {
   stopped = false;
   if (nc.words.empty()) return true;
   if (onFlat_) onFlat_(nc);
+  if (system_) system_->blockRuns(nc);
   if (machine_.execute(nc, provenance(b))) return true;
   stopped = true;
   if (machine_.ended()) done_ = true;
@@ -257,6 +258,7 @@ bool Expander::ncFlat(Frame& f, const ir::Block& b, ir::Block& flat) {
 bool Expander::execute(Frame& f, const ir::Block& b, const ir::Block& flat) {
   if (onFlat_) onFlat_(flat);
   fillProvenance(b, here_);
+  if (system_) system_->blockRuns(flat);
   if (!machine_.execute(flat, here_)) {
     if (machine_.ended()) {
       done_ = true;

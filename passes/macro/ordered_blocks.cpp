@@ -106,11 +106,14 @@ bool Expander::tailJump(const Frame& f, const ir::Stmt& s, BlockTail& tail) {
 bool Expander::errorStop(const Frame& f) {
   // a block with a message that jumps to itself never ends: the cycle programs stop this way
   // (the error blocks of WL4's %1, M0 and a message, wl4.md §5.3); the call is where to look.
-  // Without a message it is an endless loop like any other (the jump limit).
+  // A program stop that jumps to itself is the same stop without a text (wl4.md §7 example 7,
+  // `N05 M0 N05`: "no touch: stop"). Any other block is an endless loop (the jump limit).
   const ir::Block& b = f.program->blocks[f.pc];
   std::string text;
   for (const ir::Comment& c : b.comments)
     if (c.kind == ir::CommentKind::Message) text = c.text;
+  if (text.empty() && hasProgramStop(b))
+    text = "a program stop that jumps to itself: the program cannot go on";
   if (text.empty()) return false;
   const SourceRange where = stack_.size() > 1 ? SourceRange{f.callSite, 1} : b.range;
   fail(diag::code::ErrorStop, where,
@@ -118,6 +121,15 @@ bool Expander::errorStop(const Frame& f) {
                    f.program->name.empty() ? std::string("the program")
                                            : library_.label(f.program->name)));
   return true;
+}
+
+bool Expander::hasProgramStop(const ir::Block& b) const {
+  for (const ir::Word& w : b.words)
+    if (w.is('M') && w.isLiteral())
+      if (const MCodeSpec* m = machine_.profile().machine.mcode(static_cast<int>(w.number));
+          m && m->action == MAction::Stop)
+        return true;
+  return false;
 }
 
 bool Expander::advance(Frame& f) {

@@ -30,6 +30,9 @@ public:
   /// An open cycle's block (FlowAction::CallOpenCycle, words evaluated) is about to call its
   /// program: the store takes its target. False after reporting a located error.
   virtual bool openCycle(const ir::Block& /*flat*/, const ir::Word& /*code*/) { return true; }
+  /// An NC block (words evaluated) is about to run on the machine: a store that reports the
+  /// last programmed words (WL4 #130-#140) takes them here.
+  virtual void blockRuns(const ir::Block& /*flat*/) {}
 };
 
 } // namespace gcx::macro

@@ -103,9 +103,12 @@ inline constexpr const char* Wl4FanucReturnLevel = "GCXW22"; // G98/G99
 inline constexpr const char* Wl4FanucCall = "GCXW23";        // M98 is no call
 inline constexpr const char* ErrorStop = "GCX064";      // a block that jumps to itself: %1's stops
 inline constexpr const char* SystemReadOnly = "GCX065"; // WL4 #100 and up are read-only
-inline constexpr const char* Wl4ThreadNotExpressible = "GCX066"; // G32/G33 phase, lead change
-inline constexpr const char* Wl4ReturnInMain = "GCX067";         // M99 in the main program
-inline constexpr const char* Wl4ProbeWithoutTouch = "GCXW24";    // G38: no probe model
+inline constexpr const char* Wl4ThreadNotExpressible = "GCX066";   // G32/G33 phase, lead change
+inline constexpr const char* Wl4ReturnInMain = "GCX067";           // M99 in the main program
+inline constexpr const char* Wl4ProbeWithoutTouch = "GCXW24";      // G38: no probe model
+inline constexpr const char* Wl4AbsoluteAndIncremental = "GCX068"; // X with U in one block
+inline constexpr const char* Wl4TooManyLabels = "GCX069";          // over 127 labels
+inline constexpr const char* CompWithoutPlaneMotion = "GCXW25";    // no plane motion under G41/G42
 
 // --- gcx: setup file (--setup FILE, src/machine/setup)
 inline constexpr const char* SetupNotJson = "GCX020";

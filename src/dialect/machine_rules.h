@@ -133,6 +133,9 @@ struct CompensationRules {
   bool startUpPerpendicular = false; // start-up ends on the next element's start perpendicular
   bool cancelPerpendicular = false;  // the last element ends on its end perpendicular
   int lookAheadBlocks = 0; // blocks read for the next plane element; 0: the CompLookAhead setting
+  /// Warn at a block without motion in the plane while compensation is on: a control that reads
+  /// only the next block cannot process the corner across it (WL4, wl4.md §4.2).
+  bool warnWithoutPlaneMotion = false;
 };
 
 /// The words of the automatic contour geometry (nct.md §4): a chamfer or a rounding between a

@@ -13,6 +13,16 @@
 
 namespace gcx::machine {
 
+namespace {
+
+// A block without plane words moves in the plane only as an arc with a centre word there (a full
+// circle). Blocks of statements only never reach the machine.
+bool movesInPlane(const BlockWords& w, const motion::PlaneAxes& ax, bool arcMode, bool planeWords) {
+  return planeWords || (arcMode && (w.ijk[ax.first] || w.ijk[ax.second]));
+}
+
+} // namespace
+
 CompensationStage::Options Interpreter::compensationOptions() const {
   CompensationStage::Options o;
   o.lookAheadBlocks = 2 + static_cast<int>(setting(profile_, setup_, Setting::CompLookAhead));
@@ -85,6 +95,11 @@ bool Interpreter::radiusCompensation(const BlockWords& w, const ModalState& befo
                        m(ax.first, ax.second) * m(ax.second, ax.first);
     if (det < 0) side = -side;
   }
+  if (on && profile_.machine.compensation.warnWithoutPlaneMotion &&
+      !movesInPlane(w, ax, arcMode, planeWords))
+    diags_.warning(diag::code::CompWithoutPlaneMotion, blockRange_,
+                   "a block without motion in the plane while radius compensation is on: a "
+                   "control that reads only the next block may cut the corner across it wrongly");
   if (keepCompensation_) { // the target compensates: tell it, keep the programmed path
     if (side != keptSide_ || radius != keptRadius_) {
       motion::Event e;

@@ -1,5 +1,6 @@
 // Round trip through `gcx expand --to wl4` (wl4.md §5.1, §7, §8): every WL4 example, every
-// differential program and the spec's vectors, expanded (calls, cycles and macro statements
+// differential program, the spec's vectors (on their setups: block skip, work offsets, the
+// lathe) and the runnable examples of the manual, expanded (calls, cycles and macro statements
 // flattened into plain WL4 blocks), read back and run, move the tool as the original does by
 // `gcx equiv`; and a KOI8-R file and its UTF-8 twin give identical results.
 #include <gtest/gtest.h>
@@ -47,6 +48,26 @@ TEST_F(Wl4ExpandRoundTrip, TheSpecsVectors) {
     const std::string name = fmt::format("v{}.wl4", ++k);
     write(name, v);
     roundTrip(name);
+  }
+}
+
+TEST_F(Wl4ExpandRoundTrip, VectorsOnTheirSetupsAndTheManualsExamples) {
+  const std::vector<Wl4ProgramOnSetup> programs = wl4ProgramsOnSetups();
+  ASSERT_EQ(programs.size(), 18u);
+  for (const Wl4ProgramOnSetup& p : programs) {
+    const std::string name = p.name + ".wl4";
+    write(name, p.text);
+    std::string setup;
+    if (!p.setup.empty()) {
+      write(p.name + ".setup.json", p.setup);
+      setup = " --setup " + p.name + ".setup.json";
+    }
+    const CliResult e = gcx(fmt::format("expand {} --to wl4 -o expanded.wl4{}", name, setup));
+    ASSERT_EQ(e.exitCode, 0) << name << "\n" << e.err;
+    const std::string text = readFile(folder_.path() / "expanded.wl4");
+    const CliResult q = gcx(fmt::format("equiv {} expanded.wl4{}", name, setup));
+    EXPECT_EQ(q.exitCode, 0) << name << "\n" << q.out << q.err << text;
+    EXPECT_EQ(text.find(" L0"), std::string::npos) << name << "\n" << text; // flattened
   }
 }
 

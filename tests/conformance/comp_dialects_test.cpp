@@ -101,5 +101,44 @@ TEST(CompWl4_4_2, InnerCornersAtTheIntersection) {
                "L 5,0,0 F100", "R 0,-10,0"}));
 }
 
+// 002:1397-1400: blocks without motion under compensation are "not recommended" (the control
+// reads one block ahead, so it cannot process the corner across them): each one warns at its
+// block; the blocks that move in the plane, the cancel and a block of statements only do not.
+TEST(CompWl4_4_2, BlocksWithoutPlaneMotionWarn) {
+  MacroRun r = runWl4("%T\nG0 X-10 Y0\nG1 G41 D1 X0 Y0 F100\nX20\nM8\n#1=1\nY20\nZ-1\nX0\n"
+                      "G0 G40 X-10 Y30\nM2\n%\n",
+                      compSetup(5));
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  V at;
+  for (const std::string& w : r.warnings)
+    at.push_back(w.substr(w.find(':') + 1, w.find(' ') - w.find(':') - 1) + w.substr(w.find(' ')));
+  EXPECT_EQ(at, (V{"5:1 GCXW25", "8:1 GCXW25"})) << r.rendered; // not the statement's block
+  // the corners are processed across them all the same (gcx's look-ahead)
+  EXPECT_EQ(compMotion(r.motion()), (V{"R -10,0,0", "L 0,5,0 F100", "L 15,5,0 F100", "EV M8",
+                                       "L 15,15,0 F100", "L 15,15,-1 F100", "L 0,15,-1 F100",
+                                       "CW -3.5355,16.4645,-1 C0,20 r5 θ45", "R -10,30,-1"}))
+      << r.rendered;
+}
+
+TEST(CompWl4_4_2, AFullCircleByItsCentreMovesInThePlane) {
+  // G2 with I alone has no plane word, yet it moves: no warning
+  MacroRun r = runWl4("%T\nG0 X-10 Y0\nG1 G41 D1 X0 Y0 F100\nG2 I10 J0\nG0 G40 X-10 Y0\nM2\n%\n",
+                      compSetup(5));
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_TRUE(r.warnings.empty()) << r.rendered;
+  // G41 on a clockwise circle: outside it, at 10 + 5
+  EXPECT_EQ(compMotion(r.motion()),
+            (V{"R -10,0,0", "L -5,0,0 F100", "CW -5,0,0 C10,0 r15 θ360", "R -10,0,0"}))
+      << r.rendered;
+}
+
+TEST(CompWl4_4_2, AContourThatMovesInEveryBlockDoesNotWarn) {
+  MacroRun r = runWl4("%T\nG0 X-10 Y-10\nG1 G41 D1 X0 Y0 F100\nY20\nX20\nY0\nX0\n"
+                      "G0 G40 X-10 Y-10\nM2\n%\n",
+                      compSetup(5));
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_TRUE(r.warnings.empty()) << r.rendered;
+}
+
 } // namespace
 } // namespace gcx::test

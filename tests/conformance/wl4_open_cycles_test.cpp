@@ -131,6 +131,17 @@ TEST(Wl4OpenCycles_5_3, EachCyclesChecksStopWithTheirMessages) {
   }
 }
 
+TEST(Wl4OpenCycles_5_3, G79IsAnUnknownCycleOfPercent1) {
+  // %1 has no section for #108 = 79: its dispatch falls through to N010, which loops on itself
+  MacroRun r = lathe("G0 X50 Z2\nG79 X40 Z-30 F0.3\n");
+  ASSERT_EQ(errorsAt(r), (V{"4:1 GCX064"})) << r.rendered;
+  EXPECT_NE(r.rendered.find("error: ERROR > UNKNOWN CYCLE IN RANGE G70-G79 (the error stop of %1)"),
+            std::string::npos)
+      << r.rendered;
+  // the cycle's target is no move; %1's stop block runs its M0
+  EXPECT_EQ(r.motion(), (V{"R 50,0,2", "EV M0"})) << r.rendered;
+}
+
 TEST(Wl4OpenCycles_5_6, G77WithPIsTheContourCycleNotSupportedYet) {
   MacroRun r = lathe("G0 X50 Z2\nG77 P200 Q202 G1 X30 Z0 E2.5 F0.25\n");
   EXPECT_EQ(errorsAt(r), (V{"4:5 GCX030"})) << r.rendered;

@@ -145,14 +145,63 @@ TEST(Wl4Syntax_7, Example20_CycleCallBlock) {
 }
 
 TEST(Wl4Syntax_7, Example21_ProgramUnitsAndContourWords) {
-  Parsed p = parseWl4("%TEST_G77_1\nN9 G0 X10 Z40\n"
-                      "N10 G77 G0 X2 Z45 P120 Q124 I0.5 K0.5 E2 F0.7 S500 M3\nM2\n%\n");
+  // 002:3114-3125 with its contour N120-N124 (after M2 in the manual's layout too)
+  Parsed p = parseWl4("%TEST_G77_1\nN9 G0 X10 Z40 $A\n"
+                      "N10 G77 G0 X2 Z45 P120 Q124 I0.5 K0.5 E2 F0.7 S500 M3\n"
+                      "N120 G1 Z35 F0.3\nN121 G2 X5 Z25 R10\nN122 G3 X7 Z20 R8\n"
+                      "N123 G1 X8.5 Z18\nN124 Z5\nM2 $ END\n%\n");
   ASSERT_TRUE(p.errors().empty()) << p.rendered();
   EXPECT_EQ(p.blocks[0].kind, ir::BlockKind::ProgramStart);
   EXPECT_EQ(p.blocks[0].programName, "TEST_G77_1");
-  EXPECT_EQ(p.blocks[4].kind, ir::BlockKind::ProgramEnd);
-  EXPECT_EQ(printedWl4(p), (V{"%TEST_G77_1", "N9 G0 X10 Z40",
-                              "N10 G77 G0 X2 Z45 P120 Q124 I0.5 K0.5 E2 F0.7 S500 M3", "M2", "%"}));
+  EXPECT_EQ(p.blocks[9].kind, ir::BlockKind::ProgramEnd);
+  EXPECT_EQ(p.blocks[3].sequence, 120);
+  EXPECT_EQ(p.blocks[7].sequence, 124);
+  EXPECT_EQ(printedWl4(p), (V{"%TEST_G77_1", "N9 G0 X10 Z40 $A",
+                              "N10 G77 G0 X2 Z45 P120 Q124 I0.5 K0.5 E2 F0.7 S500 M3",
+                              "N120 G1 Z35 F0.3", "N121 G2 X5 Z25 R10", "N122 G3 X7 Z20 R8",
+                              "N123 G1 X8.5 Z18", "N124 Z5", "M2 $ END", "%"}));
+}
+
+// 002:3229-3250: the duplicate numbers N11 and N12 are legal (§10.15), the contour follows M2
+TEST(Wl4Syntax_7, Example22_G77RoughAndFinishWithDuplicateNumbers) {
+  Parsed p = parseWl4("%TEST_G77\nN10 G0 Z100\nN11 T1 M6\nN12 G0 X10 Z40\n"
+                      "N13 G77 G41 G0 X2 Z45 P120 Q124 R0.5 E2 F0.7 S500 M3\n"
+                      "N14 G0 Z100$TOOL CHANGE POINT\nN15 T2 M6\nN16 G0 X10 Z40\n"
+                      "N11 G77 G41 G0 X2 Z45 P120 Q124 R0.2 F0.3 S800\n"
+                      "N12 G77 G41 G0 X2 Z45 P120 Q124 F0.3 S800\nM2\n"
+                      "N120 G1 Z35\nN121 G2 X5 Z25 R10\nN122 G3 X7 Z20 R8\nN123 G1 X8.5 Z18\n"
+                      "N124 Z5\n%\n");
+  ASSERT_TRUE(p.errors().empty()) << p.rendered();
+  EXPECT_EQ(p.blocks[0].programName, "TEST_G77");
+  EXPECT_EQ(p.blocks[2].sequence, 11);
+  EXPECT_EQ(p.blocks[8].sequence, 11);
+  EXPECT_EQ(p.blocks[9].sequence, 12);
+  EXPECT_EQ(
+      printedWl4(p),
+      (V{"%TEST_G77", "N10 G0 Z100", "N11 T1 M6", "N12 G0 X10 Z40",
+         "N13 G77 G41 G0 X2 Z45 P120 Q124 R0.5 E2 F0.7 S500 M3", "N14 G0 Z100 $TOOL CHANGE POINT",
+         "N15 T2 M6", "N16 G0 X10 Z40", "N11 G77 G41 G0 X2 Z45 P120 Q124 R0.2 F0.3 S800",
+         "N12 G77 G41 G0 X2 Z45 P120 Q124 F0.3 S800", "M2", "N120 G1 Z35", "N121 G2 X5 Z25 R10",
+         "N122 G3 X7 Z20 R8", "N123 G1 X8.5 Z18", "N124 Z5", "%"}));
+}
+
+// 002:3412-3432: the transverse version, its contour monotone in X
+TEST(Wl4Syntax_7, Example23_G78TransverseWithItsContour) {
+  Parsed p = parseWl4("%TEST_G78\nN10 G0 Z100\nN11 T1 M6\nN12 G0 X10 Z40\n"
+                      "N13 G78 G41 G0 X10 Z5 P120 Q124 R0.5 E2 F0.7 S500 M3\n"
+                      "N14 G0 Z100\nN15 T2 M6\nN16 G0 X10 Z40\n"
+                      "N11 G78 G41 G0 X10 Z5 P120 Q124 R0.2 F0.3 S800\n"
+                      "N12 G78 G41 G0 X10 Z5 P120 Q124 F0.3 S800\nM2\n"
+                      "N120 G1 X8.5\nN121 G1 X8 Z15\nN122 G3 X7 Z20 R10\nN123 G2 X5 Z25 R8\n"
+                      "N124 Z40\n%\n");
+  ASSERT_TRUE(p.errors().empty()) << p.rendered();
+  EXPECT_EQ(p.blocks[0].programName, "TEST_G78");
+  EXPECT_EQ(printedWl4(p),
+            (V{"%TEST_G78", "N10 G0 Z100", "N11 T1 M6", "N12 G0 X10 Z40",
+               "N13 G78 G41 G0 X10 Z5 P120 Q124 R0.5 E2 F0.7 S500 M3", "N14 G0 Z100", "N15 T2 M6",
+               "N16 G0 X10 Z40", "N11 G78 G41 G0 X10 Z5 P120 Q124 R0.2 F0.3 S800",
+               "N12 G78 G41 G0 X10 Z5 P120 Q124 F0.3 S800", "M2", "N120 G1 X8.5", "N121 G1 X8 Z15",
+               "N122 G3 X7 Z20 R10", "N123 G2 X5 Z25 R8", "N124 Z40", "%"}));
 }
 
 TEST(Wl4Syntax_7, Example24_MessagesOfTheSystemProgram) {

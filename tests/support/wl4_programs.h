@@ -41,4 +41,59 @@ inline std::vector<std::string> wl4SpecVectors() {
   };
 }
 
+/// A WL4 program with the setup it runs on (JSON, empty for none).
+struct Wl4ProgramOnSetup {
+  std::string name, text, setup;
+};
+
+// wl4.md §8 vectors that need a setup or the lathe, and the runnable examples of §7 (7 stops at
+// M0, 16 loops for ever, 21-23 are the contour cycles): each as a whole program
+inline std::vector<Wl4ProgramOnSetup> wl4ProgramsOnSetups() {
+  const std::string lathe = R"({"wl4": {"parameters": {"lathe": 1, "b_chamfer": 1}}})";
+  return {
+      {"tv5",
+       "%TV5\nG18 G90\nN20 G0 X0 Z0\nN21 G1 Z5 F100\nN22 X100\n"
+       "/ N23 G0 Z100 M0 $ RUNS ONLY WITH THE FLAG\n/ N24 Z5\nN25 G1 Z20\nM2\n%\n",
+       R"({"block_skip": [1]})"},
+      {"tv6",
+       "%TV6\nN5 #1=10 #2=20 #3=30 #4=40\nN10 G90 G0 X#1 Z#2 #1=(#1+#3) #2=(#2+#4)\n"
+       "N15 X#1 Z#2\nN20 #5=(#4/2+15*(#3>#4))\nN25 #5=(#4/2+15*(#3<#4))\n"
+       "N30 X#1=(ABS(#3-#4) + #5=(40.78*#2))\nM2\n%\n",
+       ""},
+      {"tv12", "%TV12\nG90 G17 G0 X0 Y0 Z20 S500 M3\nG84 #2=3 #3=-15 F750\nX30 Y40\nG80 M2\n%\n",
+       ""},
+      {"tv18",
+       "%TV18\nG18 G90 G0 X30 Z5\n"
+       "G31 X24 Z-20 F1.5 P0 I0 #1=1 #2=0.25 #3=0 #4=0 #5=1.5\nM2\n%\n",
+       lathe},
+      {"tv19", "%TV19\nG18 G90 G95 G0 X40 Z70\nG1 X100 F0.2 B10\nZ10\nM2\n%\n", lathe},
+      {"tv21", "%TV21\nG92 X100 Y250 Z30\nG90 G0 X0 Y0\nG54 G0 X0 Y0\nM2\n%\n",
+       R"({"work_offsets": {"G54": [200, 100, 0]}})"},
+      {"example1", "%E1\nX.23\nZ123.4\nM2\n%\n", ""},
+      {"example3", "%E3\nG18 G90\nX100Z86.603F0.2\nG2X0Z100I-50K-86.603\nG1 X40 Z0 F0.2\nM2\n%\n",
+       lathe},
+      {"example6", "%E6\nG0 X10 Y10 Z10\nN100 G36 Z0\nN101 G36 X0 Y0\nM2\n%\n", ""},
+      {"example8", "%E8\nG18 G0 X0 Z0\nG94G38G2Z100R200F200\nM2\n%\n", ""},
+      {"example9", "%E9\nG0 X10 Y20 Z5\nG92X100Y250Z30\nG1 X110 F100\nM2\n%\n", ""},
+      {"example10",
+       "%E10\nG0 X0 Y0\nG51X-1\nG1 X10 Y5 F100\nG51X1Y-1\nG1 X20 Y10\nG50\n"
+       "G0 X0 Y0\nM2\n%\n",
+       ""},
+      {"example11", "%E11\nG51 S2000\nS1500 M3\nG0 X10\nM5\nM2\n%\n", ""},
+      {"example12", "%E12\nG94 F10.4\nG1 X10\nG95 F0.5 S20 M3\nG1 X20\nM2\n%\n", ""},
+      {"example13",
+       "%E13\nG18 G90 G95\nN50 G0 X40 Z70\nN51 G1 X100 F0.2 B10\nN52 Z10\n"
+       "N10 G0 X60 Z80\nN11 G3 X100 Z50 R50 B8 F0.2\nN12 G2 X80 Z40 R40\nM2\n%\n",
+       lathe},
+      {"example14", "%E14\n#1=4 #3=5 #4=1 #7=3 #20=7\nG0 X#20\nX#(#20)\nX#(ABS(#3-#4*2))\nM2\n%\n",
+       ""},
+      {"example17",
+       "%E17\n#1=3 #2=1 #30=2\nN010 IF3 (#1>=#2) #1=(#1-0.5) N10\n"
+       "IF (#30) #30=(#30-1)\nIF (#30<>0) #30=#30-1\nG1 X#1 Z#30 F500\n"
+       "N20 G1 X0 Z100 F500 IF ((#1-#2)>0) Z0\nM2\n%\n",
+       ""},
+      {"example18", "%E18\nG0 X0\nL07\nL0703\nM2\n%\n%07\nG91 G1 X1 F100\nG90 M99\n%\n", ""},
+  };
+}
+
 } // namespace gcx::test
