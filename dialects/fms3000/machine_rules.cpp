@@ -70,6 +70,8 @@ MachineRules machineRules() {
   r.surfaceSpeedAxis = 0;                  // the N1030 axis: X (§3.15)
   r.setCoordinatesSIsSpindleLimit = false; // the ceiling is LIMS (001:3597-3607)
   r.spindleLimitAddress = "LIMS";
+  // G96 without S holds the surface speed of the current rpm and radius (001:3608-3621)
+  r.surfaceSpeedHoldsCurrent = true;
   // "Программа без M2, M30": the end of the file reached without M2 or M30 (001:3880); M98 and
   // a standalone M99 end a program too (§2.2)
   r.endOfFileError = "the program reaches the end of its file without M02 or M30 (\"Программа "

@@ -192,6 +192,9 @@ struct MachineRules {
   bool lengthAlongPlaneNormal = false;
   /// Constant surface speed: the axis whose distance from zero is the radius (0 X, 1 Y, 2 Z).
   int surfaceSpeedAxis = 0;
+  /// Constant surface speed selected without S holds the surface speed the spindle has at that
+  /// moment (its rpm at the tool's radius), not the last one programmed.
+  bool surfaceSpeedHoldsCurrent = false;
   /// S in a set-coordinates block is the constant surface speed's spindle limit.
   bool setCoordinatesSIsSpindleLimit = false;
   /// The address whose value is the constant surface speed's spindle limit in rpm, modal

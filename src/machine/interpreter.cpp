@@ -311,6 +311,10 @@ bool Interpreter::executeBlock(const ir::Block& block) {
   const ModalState before = state_;
   pendingTurning_ = nullptr;
   if (!applyModal(w)) return false;
+  if (profile_.machine.surfaceSpeedHoldsCurrent && state_.surfaceSpeed && !before.surfaceSpeed &&
+      !w.s) // the surface speed the spindle has now at the tool's radius
+    state_.surfaceSpeedValue = state_.spindleSpeed * 2 * M_PI *
+                               std::fabs(program_[profile_.machine.surfaceSpeedAxis]) / 1000.0;
   if (!radiusCompensation(w, before)) return false;
   if (w.hasAxisWord() && !w.has(GAction::DataInput)) {
     const std::string key = workOffsetKey(state_.workOffset);

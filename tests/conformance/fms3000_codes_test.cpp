@@ -99,6 +99,13 @@ TEST(Fms3000Spec_3_15, E39ConstantSurfaceSpeedOnTheDiameter) {
                "EV S1909.8593 M3"}));
 }
 
+// E39's last program: G96 without S holds the surface speed the spindle has, 100 rpm at 25 mm
+// = 100 · 0.05 · π = 15.7 m/min, so X25 turns 200 rpm (001:3608-3621)
+TEST(Fms3000Spec_3_15, E39G96WithoutSHoldsTheCurrentSurfaceSpeed) {
+  EXPECT_EQ(motionOf(runBlocks("N1M3S100 · N2X50 · N3G96 · N4X25 · N5G97 · M30", diameterX())),
+            (V{"EV S100 M3", "R 25,0,0", "R 12.5,0,0", "EV S200 M3"}));
+}
+
 // LIMS1100 stops the rise of the rpm (at d = 150 / (1100 π) = 43 mm): at X25 the spindle
 // turns 1100 rpm, not 1909.86; the ceiling holds until another LIMS (001:3597-3607)
 TEST(Fms3000Spec_3_15, LimsCapsTheRpmOfTheConstantSurfaceSpeed) {
