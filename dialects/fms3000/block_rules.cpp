@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "diag/codes.h"
+#include "dialects/fms3000/code_rules.h"
 
 namespace gcx::fms3000 {
 
@@ -133,6 +134,7 @@ bool isCycleCode(double g) {
 bool checkBlockRules(const ir::Block& b, diag::Engine& diags) {
   warnFanucHabits(b, diags);
   if (!checkCodeCombinations(b, diags)) return false;
+  if (!checkMotionCodeRules(b, diags) || !checkProgramEndRules(b, diags)) return false;
   // a call and a program end in one block: the manual gives no order (§1.4, §10 Q21), so gcx
   // refuses rather than guess (with the Fanuc warning above for M98 P)
   if (const ir::Word* p = b.find('P'); p && !hasCycleCode(b))

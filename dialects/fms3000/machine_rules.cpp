@@ -68,7 +68,28 @@ MachineRules machineRules() {
   // G43/G44 act along axis 3, 2 or 1 under G17, G18, G19 (001:1889-1931)
   r.lengthAlongPlaneNormal = true;
   r.surfaceSpeedAxis = 0;                  // the N1030 axis: X (§3.15)
-  r.setCoordinatesSIsSpindleLimit = false; // the ceiling is LIMS
+  r.setCoordinatesSIsSpindleLimit = false; // the ceiling is LIMS (001:3597-3607)
+  r.spindleLimitAddress = "LIMS";
+  // G96 without S holds the surface speed of the current rpm and radius (001:3608-3621)
+  r.surfaceSpeedHoldsCurrent = true;
+  // "Программа без M2, M30": the end of the file reached without M2 or M30 (001:3880); M98 and
+  // a standalone M99 end a program too (§2.2)
+  r.endOfFileError = "the program reaches the end of its file without M02 or M30 (\"Программа "
+                     "без M2, M30\", 001:3880; M98 or M99 end it too)";
+  // the parameters gcx models in part (§0): the manual names N3022's two settings in words
+  // (001:1137-1145), gcx reads 1 as "G0 with linear interpolation"; N3035 (001:2176-2190) is
+  // the removal of radius compensation, modelled as 1, the spec's S0
+  r.modelledValues = {
+      {"N3022",
+       {1},
+       "only 1, \"G0 with linear interpolation\" (a straight rapid), is modelled; \"G0 without "
+       "interpolation\" (each axis at its own rate, a dog-leg path, 001:1137-1145) is not"},
+      {"N3035",
+       {1},
+       "only 1 (the cancel removes the offset on both plane axes when a plane axis moves) is "
+       "modelled; 0 (only on the moved axis) and 2 (even without a move) are not "
+       "(001:2176-2190)"},
+  };
   r.workOffsetNames = {"G54", "G55", "G56", "G57", "G58", "G59"};
   // radius compensation (fms3000.md §4.2): outer corners on arcs (G14, the power-on state),
   // start-up and cancel on the perpendiculars, up to 10 blocks without plane motion

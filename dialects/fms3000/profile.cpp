@@ -80,13 +80,19 @@ std::vector<GCodeSpec> gcodes() {
       {230, 5, "spindle override enabled", A::Modeless},
       {240, 5, "spindle override disabled", A::Modeless},
       {250, 0, "start of a repeated fragment"},
-      {270, 0, "home via the limit switches"},
+      // G27 homes the named axes through their limit switches (001:1549-1558): for the path
+      // a rapid to machine zero on those axes, like G28 (fms3000.md §3.8)
+      {270, 0, "home via the limit switches", A::ReferenceReturn, 0},
       {280, 0, "rapid to machine zero", A::ReferenceReturn, 0},
       {300, 0, "rapid to fixed point 1", A::ReferenceReturn, 1},
       {310, 0, "rapid to fixed point 2", A::ReferenceReturn, 2},
-      {320, 0, "end the motion on the touch signal"},
-      {330, 0, "thread cutting"},
-      {340, 0, "synchronise with the encoder zero mark"},
+      // without a probe model the touch never comes: the full move (§3.17, 001:1594-1611)
+      {320, 0, "end the motion on the touch signal", A::SkipMove},
+      // one block: its G1 move synchronised with the spindle, F the lead in mm per revolution;
+      // an error under G0 (001:1517-1530, 001:3855)
+      {330, 0, "thread cutting", A::ThreadOnce},
+      // the contour starts on the encoder's zero mark: timing only (001:1586-1592)
+      {340, 0, "synchronise with the encoder zero mark", A::Modeless},
       // G35 ends group 06: polar mode and the G37 rotation (§10 Q19)
       {350, 6, "Cartesian coordinates", A::RotateOff},
       {360, 6, "polar coordinates", A::PolePolar},
@@ -101,7 +107,8 @@ std::vector<GCodeSpec> gcodes() {
       {430, 8, "length compensation +", A::LengthPlus},
       {440, 8, "length compensation -", A::LengthMinus},
       {490, 8, "length compensation off", A::LengthCancel},
-      {450, 9, "dependent axes on"},
+      // dependent axes (N5018-N5418) are not modelled: G45 warns and acts as G46 (§10 Q25)
+      {450, 9, "dependent axes on", A::Modeless},
       {460, 9, "dependent axes off", A::Modeless},
       {470, 0, "implicit coordinate +", A::ImplicitPlus},
       {480, 0, "implicit coordinate -", A::ImplicitMinus},

@@ -101,9 +101,8 @@ bool Expander::run(const LoadedProgram& main) {
 
 bool Expander::endOfProgram(const Frame& f) {
   if (stack_.size() == 1) { // end of the main file without a program end (nct.md Q31)
-    machine_.finish();
     done_ = true;
-    return true;
+    return machine_.endOfFile();
   }
   // a called program must end with the dialect's return code (its Return row)
   std::string code = "a return", spec;

@@ -203,7 +203,7 @@ bool executeProgram(Session& s, const CommonOptions& opt, const machine::Setup& 
     // drain the rest for static errors (GOTO targets, loops) only when the program ran out
     checker.finish(s.file(), s.source().failedBlocks() > 0);
     if (s.diags().hasErrors()) return false;
-    interp.finish();
+    interp.endOfFile();
   }
   sink.finish();
   return !s.diags().hasErrors();

@@ -48,7 +48,8 @@ inline constexpr const char* SignAlias = "GCXW01";
 inline constexpr const char* SkipLevelNine = "GCXW02";
 inline constexpr const char* StrayParen = "GCXW03";
 inline constexpr const char* LoneCarriageReturn = "GCXW04";
-inline constexpr const char* LongBlock = "GCXW05"; // longer than the dialect's manual allows
+inline constexpr const char* LongBlock = "GCXW05";        // longer than the dialect's manual allows
+inline constexpr const char* SkipWithoutTouch = "GCXW06"; // a skip move without a probe model
 
 // --- machine: alarms the manual numbers (nct.md §3)
 inline constexpr const char* MirrorWithTransform = "2001";
@@ -83,6 +84,7 @@ inline constexpr const char* DwellWithoutP = "GCX035";
 inline constexpr const char* ExpressionNotExpanded = "GCX036";
 inline constexpr const char* ArcZeroRadius = "GCX037";
 inline constexpr const char* EndWithoutM30 = "GCX038";
+inline constexpr const char* SkipUnderCompensation = "GCX039"; // a skip move (G32) under comp
 // --- gcx: the macro pass
 inline constexpr const char* RunawayLoop = "GCX040";
 inline constexpr const char* TooManyBlocks = "GCX041";
@@ -91,6 +93,7 @@ inline constexpr const char* OutputTooLarge = "GCX044";        // --max-output
 inline constexpr const char* ValueOutOfRange = "GCX045";       // not finite, or not writable
 inline constexpr const char* PathOutsideFolders = "GCX046";    // M98 <../x>, an absolute path
 inline constexpr const char* FeedPerRevolutionAtS0 = "GCX047"; // G95 move, spindle speed 0
+inline constexpr const char* ThreadAtRapid = "GCX048";         // a one-block thread (G33) under G0
 inline constexpr const char* ParameterMissing = "NCTX11";
 // --- WL4 (wl4.md)
 inline constexpr const char* Wl4Syntax = "GCX060";           // a WL4 block that does not parse
@@ -173,6 +176,9 @@ inline constexpr const char* FmsCycleParameters = "FMSX02"; // cycle words wrong
 inline constexpr const char* FmsCallAndEnd = "FMSX03";      // P with M02/M30/M98 (§1.4, §10 Q21)
 inline constexpr const char* FmsPolarRule = "FMSX04"; // G36 polar rules (§3.11, 001:3856-3859)
 inline constexpr const char* FmsProfile = "FMSX05";   // G164/G165 profile wrong (001:3903-3975)
+inline constexpr const char* FmsMotionCodeWords = "FMSX06"; // G27 without axes or with I J K
+inline constexpr const char* FmsProgramRule = "FMSX07";     // end M codes, M99 with P, two calls
+inline constexpr const char* FmsDependentAxes = "GCXW12";   // G45: dependent axes not modelled
 
 // --- gcx translate between dialects (docs/translation.md)
 inline constexpr const char* TranslateNoCode = "GCX080"; // the target has no code for this meaning

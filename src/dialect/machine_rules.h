@@ -114,6 +114,14 @@ struct TransformWords {
   const char* scaleWithoutFactor = "";
 };
 
+/// A machine parameter of which gcx models only some values: a setup giving another value is
+/// a located setup error (GCX023) with `why`, never a silent other meaning.
+struct ModelledValues {
+  const char* key;            // the setup's parameter key
+  std::vector<double> values; // the values gcx models
+  const char* why;            // what the others mean and why they are refused
+};
+
 /// The meaning of L in an arc block.
 enum class ArcLMeaning : unsigned char {
   Turns, // the number of started turns (a spiral or a multi-turn arc)
@@ -151,6 +159,7 @@ struct ContourWords {
 /// What the machine model follows for a dialect, beside its code tables.
 struct MachineRules {
   std::vector<SettingSpec> settings;
+  std::vector<ModelledValues> modelledValues;
   /// A data-entry parameter record's setup key: this prefix and the record's number written
   /// with at least this many digits (NCT: "N" and four digits, docs/machine-model.md).
   std::string parameterKeyPrefix;
@@ -186,8 +195,17 @@ struct MachineRules {
   bool lengthAlongPlaneNormal = false;
   /// Constant surface speed: the axis whose distance from zero is the radius (0 X, 1 Y, 2 Z).
   int surfaceSpeedAxis = 0;
+  /// Constant surface speed selected without S holds the surface speed the spindle has at that
+  /// moment (its rpm at the tool's radius), not the last one programmed.
+  bool surfaceSpeedHoldsCurrent = false;
   /// S in a set-coordinates block is the constant surface speed's spindle limit.
   bool setCoordinatesSIsSpindleLimit = false;
+  /// The address whose value is the constant surface speed's spindle limit in rpm, modal
+  /// (FMS-3000 LIMS); null: none.
+  const char* spindleLimitAddress = nullptr;
+  /// The error that the main program's file ran out without a program end, null when it may
+  /// (nct.md Q31).
+  const char* endOfFileError = nullptr;
   /// Selecting a work offset (or the machine system) ends the set-coordinates shift (WL4:
   /// G92 is cancelled by G53-G59); otherwise the shift holds in every work system.
   bool workOffsetEndsSetCoordinates = false;

@@ -112,6 +112,8 @@ enum class GAction : unsigned char {
   ThreadMotion,        // spindle-synchronised line, F the lead of the longest axis (WL4 G32)
   ThreadReciprocating, // the same out, spindle reversed, back to the start (WL4 G33)
   ProbeReturn,         // the block's move runs out and back to its start (WL4 G38)
+  SkipMove,            // the block's move ends early on a touch signal (FMS-3000 G32)
+  ThreadOnce,          // the block's G1 move is spindle-synchronised, F the lead (FMS-3000 G33)
 };
 
 struct GCodeSpec {

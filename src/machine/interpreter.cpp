@@ -287,8 +287,11 @@ bool Interpreter::executeBlock(const ir::Block& block) {
       c.chamferAxis >= 'A' && c.chamferAxis <= 'C' && parameter(c.chamferAxisKey, 0) == 1)
     if (const ir::Word*& axis = w.extra[c.chamferAxis - 'A']) // the chamfer leg, not an axis
       w.chamfer = std::exchange(axis, nullptr);
+  const char* limitAddress = profile_.machine.spindleLimitAddress;
   for (const ir::Word* o : w.other)
-    if (!o->is('N') && !o->is('O'))
+    if (limitAddress && o->address == limitAddress)
+      state_.maxSpindleSpeed = o->number; // the ceiling of the constant surface speed's rpm
+    else if (!o->is('N') && !o->is('O'))
       return fail(diag::code::NotImplemented, o->range,
                   fmt::format("address {} is not implemented yet", o->address));
   for (int i = 0; i < 3; ++i)
@@ -308,6 +311,10 @@ bool Interpreter::executeBlock(const ir::Block& block) {
   const ModalState before = state_;
   pendingTurning_ = nullptr;
   if (!applyModal(w)) return false;
+  if (profile_.machine.surfaceSpeedHoldsCurrent && state_.surfaceSpeed && !before.surfaceSpeed &&
+      !w.s) // the surface speed the spindle has now at the tool's radius
+    state_.surfaceSpeedValue = state_.spindleSpeed * 2 * M_PI *
+                               std::fabs(program_[profile_.machine.surfaceSpeedAxis]) / 1000.0;
   if (!radiusCompensation(w, before)) return false;
   if (w.hasAxisWord() && !w.has(GAction::DataInput)) {
     const std::string key = workOffsetKey(state_.workOffset);
@@ -328,14 +335,23 @@ bool Interpreter::executeBlock(const ir::Block& block) {
   const bool arcWithCentreOnly =
       (state_.motion == GAction::ArcCW || state_.motion == GAction::ArcCCW) &&
       (w.ijk[0] || w.ijk[1] || w.ijk[2] || (w.r && profile_.machine.strictArcRadius));
+  if (const ir::Word* skip = w.findAction(GAction::SkipMove); skip && !skipWithoutTouch(*skip))
+    return false;
   const ir::Word* probe = w.findAction(GAction::ProbeReturn);
   const Vec3 probeFrom = program_;
   if (probe) {
     probing_ = true;
     probePath_.clear();
   }
+  const ir::Word* thread = w.findAction(GAction::ThreadOnce);
+  const GAction motionMode = state_.motion;
+  if (thread && !threadOnce(*thread)) return false;
   if (!consumed && (w.hasAxisWord() || arcWithCentreOnly || w.angle)) // ,A alone: a direction
     if (!move(w)) return false;
+  if (thread) { // one block only: the modal motion and no thread sequence go on
+    state_.motion = motionMode;
+    threadLead_.reset();
+  }
   if (probe && !probeBack(*probe, probeFrom)) return false;
   if (pendingDwell_) {
     emitDwell(*pendingDwell_);
@@ -481,6 +497,8 @@ bool Interpreter::applyModal(const BlockWords& w) {
     case GAction::ImplicitPlus:
     case GAction::ImplicitMinus:
     case GAction::ProbeReturn: // probeBack() after the move
+    case GAction::SkipMove:    // skipWithoutTouch() before the move
+    case GAction::ThreadOnce:  // threadOnce() around the move
       break;                   // applyNonMotion
     case GAction::RadiusCompLeft:
     case GAction::RadiusCompRight:
@@ -1370,6 +1388,15 @@ void Interpreter::message(const std::string& text, const motion::Provenance& fro
     e.text.clear();
     emit(std::move(e));
   }
+}
+
+bool Interpreter::endOfFile() {
+  if (ended_) return true;
+  const char* message = profile_.machine.endOfFileError;
+  if (message && !pendingProfile_ && !directionLine_) // finish() reports those first
+    return fail(diag::code::EndWithoutM30, blockRange_, message);
+  finish();
+  return !stopped_;
 }
 
 void Interpreter::finish() {

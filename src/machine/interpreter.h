@@ -110,6 +110,9 @@ public:
   bool execute(const ir::Block& block, const motion::Provenance& from);
   /// The input ended; a program may end without M2/M30 (nct.md Q31).
   void finish();
+  /// The main program's file ran out: finish(), or the dialect's error when a program must end
+  /// with an end code (MachineRules::endOfFileError). False after an error.
+  bool endOfFile();
   /// For `--to nct` without cycle expansion: canned-cycle blocks pass through unexecuted; the
   /// programmed position follows the hole positions in the plane (not the drilling axis).
   void setDeferCycles(bool on) { deferCycles_ = on; }
@@ -228,6 +231,12 @@ private:
   bool fillet(const Vec3& end, const motion::Extra& extraEnd);
   /// After a WL4 G38 block's move: the results, and the same path back (probe_move.cpp).
   bool probeBack(const ir::Word& code, const Vec3& from);
+  /// Before a skip move's motion (FMS-3000 G32): refused under radius compensation, and without
+  /// a probe model the move runs to its end (probe_move.cpp).
+  bool skipWithoutTouch(const ir::Word& code);
+  /// Before a one-block thread's move (FMS-3000 G33): its G1 becomes a thread move at the
+  /// lead F; under G0 an error, with G2/G3 not implemented (thread_motion.cpp).
+  bool threadOnce(const ir::Word& code);
   /// A WL4 G32/G33 thread move to `to` (thread_motion.cpp, wl4.md §3.6).
   bool threadMove(const BlockWords& w, const Vec3& to, const motion::Extra& extraTo);
   /// The arc from the current position about `centre` (program coordinates) to `end`.

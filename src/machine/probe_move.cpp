@@ -3,7 +3,8 @@
 // probe model, so it takes the spec's static reading: no touch, the move runs to its end point
 // and back (a warning says so), and the results #1000-#1027 hold that end point. The canonical
 // output writes the two moves as they are: LinuxCNC's G38.2 would stop with an error without a
-// touch, so it cannot say "no touch" (docs/wl4.md).
+// touch, so it cannot say "no touch" (docs/wl4.md). A skip move (FMS-3000 G32, fms3000.md §3.17)
+// takes the same reading without the way back: the move runs to its end point.
 #include <fmt/format.h>
 
 #include "diag/codes.h"
@@ -39,6 +40,19 @@ bool Interpreter::probeBack(const ir::Word& code, const Vec3& from) {
     if (stopped_) return false;
   }
   program_ = from;
+  return true;
+}
+
+bool Interpreter::skipWithoutTouch(const ir::Word& code) {
+  if (state_.radiusComp == GAction::RadiusCompLeft || state_.radiusComp == GAction::RadiusCompRight)
+    return fail(diag::code::SkipUnderCompensation, code.range,
+                fmt::format("{} under radius compensation: the compensated path cannot end at an "
+                            "unknown point; cancel the compensation first",
+                            fmt::format("{}{}", code.address, code.text)));
+  diags_.warning(diag::code::SkipWithoutTouch, code.range,
+                 fmt::format("{}: gcx has no probe model and assumes the touch signal never "
+                             "comes: the move runs to its end point",
+                             fmt::format("{}{}", code.address, code.text)));
   return true;
 }
 

@@ -542,6 +542,11 @@ private:
                 fmt::format("bit parameter {} must be 0 or 1, not {}", *name, *x));
         continue;
       }
+      if (const ModelledValues* m = d.modelled(*name);
+          m && std::find(m->values.begin(), m->values.end(), *x) == m->values.end()) {
+        atValue(at, code::SetupBadValue, fmt::format("{} = {}: {}", *name, *x, m->why));
+        continue;
+      }
       if (apply) out.parameters[*name] = *x;
     }
   }

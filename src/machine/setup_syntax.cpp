@@ -148,6 +148,7 @@ SetupSyntax setupSyntax(const std::string& dialect, const Profile& profile) {
             s.namedParameters.end())
       s.namedParameters.push_back(key);
   s.workOffsetNames = r.workOffsetNames;
+  s.modelledValues = r.modelledValues;
   s.extendedWorkOffsetPrefix = r.extendedWorkOffsetPrefix;
   s.extendedWorkOffsets = r.extendedWorkOffsetPrefix.empty() ? 0 : r.extendedWorkOffsets;
   if (const ControlFlow* flow = profile.controlFlow; flow && flow->hasVariables) {
@@ -155,6 +156,12 @@ SetupSyntax setupSyntax(const std::string& dialect, const Profile& profile) {
     s.presetVariables = {{v.localFirst, v.localLast}, {v.commonFirst, v.commonLast}};
   }
   return s;
+}
+
+const ModelledValues* SetupSyntax::modelled(std::string_view key) const {
+  for (const ModelledValues& m : modelledValues)
+    if (key == m.key) return &m;
+  return nullptr;
 }
 
 const SetupSyntax* SetupDialects::find(std::string_view name) const {

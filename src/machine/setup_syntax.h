@@ -24,6 +24,10 @@ struct SetupSyntax {
   std::string extendedWorkOffsetPrefix;     // + 1..extendedWorkOffsets ("G54.1 P7")
   int extendedWorkOffsets = 0;
   std::vector<std::pair<int, int>> presetVariables; // #first..#last ranges a setup may set
+  std::vector<ModelledValues> modelledValues;       // parameters gcx models in part
+
+  /// The rule of a parameter gcx models only in part, or null.
+  const ModelledValues* modelled(std::string_view key) const;
 
   /// The canonical key of a parameter as a file may write it (NCT: lower case, fewer digits), or
   /// nullopt when it is not one of this dialect's parameters.

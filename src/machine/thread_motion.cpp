@@ -4,7 +4,8 @@
 // constant lead along Z from the spindle's index, so the event carries the lead along Z, and a
 // phase P, a lead change I or a thread without Z travel is a located error, never a guess.
 // G33 runs to the end point, reverses the spindle, returns to the start on the same lead and
-// restores the spindle's direction.
+// restores the spindle's direction. FMS-3000's G33 (fms3000.md §3.17, 001:1517-1530) makes one
+// G1 block such a move, and the block's modal motion holds after it.
 #include <cmath>
 #include <fmt/format.h>
 
@@ -48,6 +49,22 @@ bool Interpreter::threadMove(const BlockWords& w, const Vec3& to, const motion::
   state_.spindleDirection = direction;
   emitSpindle();
   program_ = from;
+  return true;
+}
+
+bool Interpreter::threadOnce(const ir::Word& code) {
+  const std::string name = fmt::format("{}{}", code.address, code.text);
+  if (state_.motion == GAction::Rapid)
+    return fail(diag::code::ThreadAtRapid, code.range,
+                fmt::format("{} under a rapid: a spindle-synchronised move runs at the feed F, "
+                            "in mm per revolution",
+                            name));
+  if (state_.motion != GAction::Linear)
+    return fail(
+        diag::code::NotImplemented, code.range,
+        fmt::format("{} with an arc (a spindle-synchronised arc) is not implemented yet", name));
+  state_.motion = GAction::ThreadMotion;
+  threadLead_.reset(); // F of this block, or the one in force, is the lead
   return true;
 }
 

@@ -11,17 +11,6 @@ namespace {
 
 using V = std::vector<std::string>;
 
-// " · " separates blocks in the spec; each becomes a CR LF line
-std::string blocks(const std::string& spec) {
-  std::string out, rest = spec;
-  const std::string dot = " \u00b7 ";
-  for (std::size_t at; (at = rest.find(dot)) != std::string::npos;) {
-    out += rest.substr(0, at) + "\r\n";
-    rest = rest.substr(at + dot.size());
-  }
-  return out + rest + "\r\n";
-}
-
 machine::Setup s0() {
   machine::Setup s;
   s.parameters = {{"N7001", 10}, {"N7101", 20}, {"N7201", 300}};
@@ -35,7 +24,7 @@ machine::Setup withParameter(const char* key, double value) {
 }
 
 V run(const std::string& spec, const machine::Setup& setup = s0()) {
-  const MacroRun r = runFms(blocks(spec), setup);
+  const MacroRun r = runFms(specBlocks(spec), setup);
   EXPECT_EQ(r.errors, V{}) << r.rendered;
   V m = r.motion();
   if (!m.empty() && m.back() == "END") m.pop_back();
@@ -43,7 +32,7 @@ V run(const std::string& spec, const machine::Setup& setup = s0()) {
 }
 
 V errorsOf(const std::string& spec) {
-  return runFms(blocks(spec), s0()).errors;
+  return runFms(specBlocks(spec), s0()).errors;
 }
 
 const V kT1{"R 200,40,0", "CCW 140,100,0 C140,40 r60 θ90", "CW 120,60,0 C90,100 r50 θ53.1301"};
@@ -469,7 +458,7 @@ TEST(Fms3000Vectors_8, NegativeChamferWithBothAxes) {
 }
 
 TEST(Fms3000Vectors_8, NegativeX1E3IsX1WithAnUnusedE) {
-  const MacroRun r = runFms(blocks("G1X1E3F100 · M30"), s0());
+  const MacroRun r = runFms(specBlocks("G1X1E3F100 · M30"), s0());
   EXPECT_EQ(r.errors, V{});
   EXPECT_EQ(r.warnings, V{"main.fms:1:5 GCXW10"});
   EXPECT_EQ(r.motion(), (V{"L 1,0,0 F100", "END"}));

@@ -82,6 +82,27 @@ TEST(SetupDialects, TopLevelKeysUseTheProgramsSyntax) {
                 "1:46 GCX023 #1 cannot be preset; fms3000 has no variables a setup may preset"}));
 }
 
+// FMS-3000 N3022 (fms3000.md §3.3, 001:1137-1145) and N3035 (§4.2, 001:2176-2190): gcx models
+// one value of each; another is refused where the setup writes it, never silently ignored.
+TEST(Fms3000Spec_3_3, N3022AndN3035OnlyTakeTheValuesGcxModels) {
+  const Read good = readFor("fms3000", R"({"parameters": {"N3022": 1, "N3035": 1}})");
+  ASSERT_TRUE(good.setup);
+  EXPECT_EQ(good.setup->parameters, (Params{{"N3022", 1}, {"N3035", 1}}));
+  const Read bad = readFor("fms3000", R"({"parameters": {"N3022": 0,
+"N3035": 2}})");
+  EXPECT_FALSE(bad.setup);
+  EXPECT_EQ(bad.errors(),
+            (std::vector<std::string>{
+                "1:26 GCX023 N3022 = 0: only 1, \"G0 with linear interpolation\" (a straight "
+                "rapid), is modelled; \"G0 without interpolation\" (each axis at its own rate, a "
+                "dog-leg path, 001:1137-1145) is not",
+                "2:10 GCX023 N3035 = 2: only 1 (the cancel removes the offset on both plane axes "
+                "when a plane axis moves) is modelled; 0 (only on the moved axis) and 2 (even "
+                "without a move) are not (001:2176-2190)"}));
+  // the rule is FMS-3000's: an NCT setup's N3022 is an ordinary parameter
+  EXPECT_TRUE(readFor("nct", R"({"parameters": {"N3022": 0}})").setup);
+}
+
 // Another dialect's section is checked by that dialect's syntax even when it does not apply.
 TEST(SetupDialects, OtherSectionsAreCheckedByTheirOwnSyntax) {
   const Read r = readFor("nct", R"({"wl4": {"parameters": {"N1339": 1}, "feed": 2},

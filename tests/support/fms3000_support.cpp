@@ -8,6 +8,16 @@
 
 namespace gcx::test {
 
+std::string specBlocks(const std::string& spec) {
+  std::string out, rest = spec;
+  const std::string dot = " \u00b7 ";
+  for (std::size_t at; (at = rest.find(dot)) != std::string::npos;) {
+    out += rest.substr(0, at) + "\r\n";
+    rest = rest.substr(at + dot.size());
+  }
+  return out + rest + "\r\n";
+}
+
 Parsed parseFms(const std::string& text) {
   Parsed p;
   const FileId f = p.sources.addBuffer("test.fms", text);

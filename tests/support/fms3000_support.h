@@ -11,6 +11,8 @@
 
 namespace gcx::test {
 
+/// A program in the spec's notation, blocks separated by " · " (fms3000.md §8), as CR LF lines.
+std::string specBlocks(const std::string& spec);
 Parsed parseFms(const std::string& text);
 /// Each block as `gcx fmt` writes it (without the CR LF).
 std::vector<std::string> printedFms(const Parsed& p);
