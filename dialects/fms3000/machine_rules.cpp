@@ -1,5 +1,7 @@
 #include "dialects/fms3000/machine_rules.h"
 
+#include "dialect/profile.h"
+
 namespace gcx::fms3000 {
 
 namespace {
@@ -75,6 +77,14 @@ MachineRules machineRules() {
   r.compensation.outerCornerArcs = true;
   r.compensation.startUpPerpendicular = r.compensation.cancelPerpendicular = true;
   r.compensation.lookAheadBlocks = 11;
+  // G164/G165 profile blocks (001:3287-3291): only N, X, Z, G1, G2, G3, G90, G91, I, J, R, F,
+  // each with a number; the approach block may be a rapid (the manual's example approaches
+  // with G1). K is the centre word of Z under G18 (§3.5).
+  using A = GAction;
+  r.profileBlock = {{A::Linear, A::ArcCW, A::ArcCCW, A::Absolute, A::Incremental},
+                    {A::Rapid},
+                    "NXZIJKRF",
+                    "N X Z G1 G2 G3 G90 G91 I J K R F (001:3287-3291, 001:3903-3909)"};
   return r;
 }
 

@@ -76,6 +76,7 @@ MachineRules machineRules() {
   r.workOffsetNames = {"G54", "G55", "G56", "G57", "G58", "G59"};
   r.extendedWorkOffsetPrefix = "G54.1 P";
   r.extendedWorkOffsets = 99; // G54.1 P1-P99 (nct.md §3.14)
+  r.referencePoints = 4;      // G30 P1-P4 (nct.md Q15)
   // look-ahead breakers of radius compensation (nct.md §3.17.7, 000:7745-7768)
   using G = GAction;
   r.compensation.breakers = {G::StrokeLimitOn,      G::StrokeLimitOff,   G::WorkOffset,

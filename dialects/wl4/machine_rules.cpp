@@ -65,6 +65,9 @@ MachineRules machineRules() {
   // B is a rotary axis, or with the setup's b_chamfer = 1 the automatic chamfer's leg (§3.16)
   r.contour.chamferAxis = 'B';
   r.contour.chamferAxisKey = "b_chamfer";
+  // G38 (§3.8): the spec's static reading, the results #1000-#1027 (system_variables.cpp)
+  r.probeWithoutTouch = "G38: gcx has no probe model and assumes no touch (wl4.md §3.8): the move "
+                        "runs to its end point and back, and #1000-#1027 hold the end point";
   return r;
 }
 

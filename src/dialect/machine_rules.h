@@ -145,6 +145,15 @@ struct ContourWords {
   std::string chamferAxisKey;
 };
 
+/// The blocks of a contour cycle's profile (FMS-3000 G164/G165 up to `endcont`): what they may
+/// hold. Empty: the dialect has no such cycle.
+struct ProfileBlockWords {
+  std::vector<GAction> codes;         // the G codes allowed, by action
+  std::vector<GAction> approachCodes; // allowed in the first (approach) block besides
+  std::string letters;                // the other addresses allowed
+  const char* list = "";              // how messages list what is allowed
+};
+
 /// What the machine model follows for a dialect, beside its code tables.
 struct MachineRules {
   std::vector<SettingSpec> settings;
@@ -195,6 +204,11 @@ struct MachineRules {
   int extendedWorkOffsets = 0; // numbered 1..this
   CompensationRules compensation;
   ContourWords contour;
+  /// Reference points a reference return by number may name: P1..this.
+  int referencePoints = 0;
+  ProfileBlockWords profileBlock;
+  /// The warning of a probing move: gcx has no probe model and assumes no touch.
+  const char* probeWithoutTouch = "";
 
   const SettingSpec* setting(Setting s) const;
   const MCodeSpec* mcode(int code) const;
