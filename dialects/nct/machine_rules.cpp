@@ -69,7 +69,10 @@ MachineRules machineRules() {
              "G4 takes P (seconds, or revolutions in G95); X is not defined in NCT (Q37)"};
   r.transform = {'R', 'P', "IJK", "G68 without R: angle 0 (nct.md Q18)",
                  "G51 without P or I/J/K: scaling factor 1 (nct.md Q18)"}; // nct.md §3.15
-  r.arcL = ArcLMeaning::Turns;                                             // 000:1340
+  // mirror only in the G50 G69 state; G50 and G69 end scaling and rotation in reverse order
+  r.transformRules = {true, true, "nct.md §3.15"};
+  r.motionCancelsCycle = true;            // G00-G03 cancel a canned cycle like G80 (000:9479-9480)
+  r.arcL = ArcLMeaning::Turns;            // 000:1340
   r.lengthAlongPlaneNormal = false;       // N1416 ZAX=1: along Z (nct.md §3.16)
   r.surfaceSpeedAxis = 0;                 // nct.md §3.18: the radius is |X|
   r.setCoordinatesSIsSpindleLimit = true; // G92 S (nct.md §3.18)

@@ -114,6 +114,15 @@ struct TransformWords {
   const char* scaleWithoutFactor = "";
 };
 
+/// How the programmable transformations may be combined and ended.
+struct TransformRules {
+  /// Mirroring is switched on or off only while no rotation or scaling is active.
+  bool mirrorOnlyWithoutRotationOrScaling = false;
+  /// Rotation and scaling are switched off in the reverse order of switching on.
+  bool switchOffsMustNest = false;
+  const char* spec = ""; // where the dialect states them, for messages
+};
+
 /// The meaning of L in an arc block.
 enum class ArcLMeaning : unsigned char {
   Turns, // the number of started turns (a spiral or a multi-turn arc)
@@ -169,6 +178,9 @@ struct MachineRules {
   SkipSense skipSense = SkipSense::SkipWhenOn;
   DwellRule dwell;
   TransformWords transform;
+  TransformRules transformRules;
+  /// A motion code ends the canned-cycle mode as the cycle-cancel code does.
+  bool motionCancelsCycle = false;
   ArcLMeaning arcL = ArcLMeaning::Turns;
   /// A dwell written with a motion runs after the motion of its block (FMS-3000 §3.9), instead
   /// of the block being a dwell only.

@@ -354,7 +354,8 @@ bool Interpreter::setModal(const GCodeSpec& g) {
     if (g.action != GAction::ThreadMotion && g.action != GAction::ThreadReciprocating)
       threadLead_.reset(); // a thread sequence ends with the next G0-G3 (wl4.md §3.6)
     state_.motion = g.action;
-    if (state_.cycle == GAction::DrillCycle) cancelCycleMode(); // like G80 (000:9479-9480)
+    if (state_.cycle == GAction::DrillCycle && profile_.machine.motionCancelsCycle)
+      cancelCycleMode();
     return true;
   case GAction::PlaneXY:
     state_.plane = Plane::XY;
@@ -500,7 +501,8 @@ bool Interpreter::applyModal(const BlockWords& w) {
       turningMode_ = g;
       turningEnd_.reset();
       turningTaper_.reset();
-      if (state_.cycle == GAction::DrillCycle) cancelCycleMode();
+      if (state_.cycle == GAction::DrillCycle && profile_.machine.motionCancelsCycle)
+        cancelCycleMode();
       break;
     default:
       return fail(diag::code::NotImplemented, word.range,
@@ -550,11 +552,14 @@ bool Interpreter::transforms(const BlockWords& w) {
     const std::string rotateOff = codeName(profile_, GAction::RotateOff);
     return codes.empty() ? rotateOff : rotateOff.empty() ? codes : codes + " " + rotateOff;
   };
+  const TransformRules& rules = profile_.machine.transformRules;
+  const bool mirrorRefused =
+      rules.mirrorOnlyWithoutRotationOrScaling && (transforms_.rotating() || transforms_.scaling());
   if (const ir::Word* g = w.findAction(GAction::MirrorOn)) {
-    if (transforms_.rotating() || transforms_.scaling())
+    if (mirrorRefused)
       return fail(
           diag::code::MirrorWithTransform, g->range,
-          fmt::format("mirror may only be switched on in {} state (nct.md §3.15)", plainState()));
+          fmt::format("mirror may only be switched on in {} state ({})", plainState(), rules.spec));
     unsigned mask = 0;
     for (int a = 0; a < 3; ++a)
       if (w.axis[a]) mask |= 1u << a;
@@ -562,31 +567,33 @@ bool Interpreter::transforms(const BlockWords& w) {
   }
   if (w.has(GAction::MirrorBySign) && !mirrorBySign(w)) return false;
   if (const ir::Word* g = w.findAction(GAction::MirrorOff)) {
-    if (transforms_.rotating() || transforms_.scaling())
-      return fail(
-          diag::code::MirrorWithTransform, g->range,
-          fmt::format("mirror may only be switched off in {} state (nct.md §3.15)", plainState()));
+    if (mirrorRefused)
+      return fail(diag::code::MirrorWithTransform, g->range,
+                  fmt::format("mirror may only be switched off in {} state ({})", plainState(),
+                              rules.spec));
     unsigned mask = 0;
     for (int a = 0; a < 3; ++a)
       if (w.axis[a]) mask |= 1u << a;
     transforms_.cancelMirror(mask ? mask : 7u);
   }
   if (const ir::Word* g = w.findAction(GAction::RotateOff)) {
-    if (transforms_.rotating() && transforms_.innermost() != Transforms::Kind::Rotate)
+    if (rules.switchOffsMustNest && transforms_.rotating() &&
+        transforms_.innermost() != Transforms::Kind::Rotate)
       return fail(diag::code::TransformNesting, g->range,
                   fmt::format("{} while {} switched on after {} is still active: switch-offs "
-                              "must nest (nct.md §3.15)",
+                              "must nest ({})",
                               gName(*g), codeName(profile_, GAction::ScaleOn),
-                              codeName(profile_, GAction::RotateOn)));
+                              codeName(profile_, GAction::RotateOn), rules.spec));
     transforms_.cancel(Transforms::Kind::Rotate);
   }
   if (const ir::Word* g = w.findAction(GAction::ScaleOff)) {
-    if (transforms_.scaling() && transforms_.innermost() != Transforms::Kind::Scale)
+    if (rules.switchOffsMustNest && transforms_.scaling() &&
+        transforms_.innermost() != Transforms::Kind::Scale)
       return fail(diag::code::TransformNesting, g->range,
                   fmt::format("{} while {} switched on after {} is still active: switch-offs "
-                              "must nest (nct.md §3.15)",
+                              "must nest ({})",
                               gName(*g), codeName(profile_, GAction::RotateOn),
-                              codeName(profile_, GAction::ScaleOn)));
+                              codeName(profile_, GAction::ScaleOn), rules.spec));
     transforms_.cancel(Transforms::Kind::Scale);
   }
   const TransformWords& words = profile_.machine.transform;
