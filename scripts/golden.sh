@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
 # Golden outputs of every example and test program: what the engine means today, byte for byte.
 #
-#   scripts/golden.sh capture OUTDIR [GCX]   run every .nct under examples/ and tests/ through
-#                                            expand --to canonical --provenance, run --trace,
-#                                            fmt and check --json; store outputs and exit codes
+#   scripts/golden.sh capture OUTDIR [GCX]   run every .nct, .fms and .wl4 under examples/ and
+#                                            tests/ through expand --to canonical --provenance,
+#                                            run --trace, fmt and check --json; store outputs
+#                                            and exit codes
 #   scripts/golden.sh compare DIR_A DIR_B    list every program whose outputs differ
 #
-# A program's setup is the X.setup.json beside X.nct, when there is one. Programs run with their
-# own folder as the working directory, so subprograms beside them are found as in the tests.
+# A program's setup is the X.setup.json beside X.nct (X.fms, X.wl4), when there is one; the
+# extension picks the dialect. Programs run with their own folder as the working directory, so
+# the subprograms beside them are found as in the tests (NCT O0012.nct, FMS-3000 program units
+# 19.fms, WL4 %-programs). An FMS-3000 program unit is also run on its own: it ends at its M99.
 # Execution runs with small fixed limits, so runaway programs of the error corpus stop early and
 # always at the same block, whatever the command's defaults are.
 set -euo pipefail
@@ -23,7 +26,8 @@ capture() {
     local dir name setup=() dest
     dir=$(dirname "$rel")
     name=$(basename "$rel")
-    [ -f "$top/${rel%.nct}.setup.json" ] && setup=(--setup "$(basename "${rel%.nct}").setup.json")
+    local stem=${rel%.*}
+    [ -f "$top/$stem.setup.json" ] && setup=(--setup "$(basename "$stem").setup.json")
     dest="$out/$rel"
     mkdir -p "$(dirname "$dest")"
     (
@@ -42,7 +46,8 @@ capture() {
       run check "$gcx" check --json "$name"
     )
     count=$((count + 1))
-  done < <(cd "$top" && find examples tests -name '*.nct' | LC_ALL=C sort)
+  done < <(cd "$top" && find examples tests \( -name '*.nct' -o -name '*.fms' -o -name '*.wl4' \) |
+    LC_ALL=C sort)
   echo "captured $count programs into $out"
 }
 
@@ -60,7 +65,7 @@ case "${1:-}" in
 capture) capture "${2:?OUTDIR}" ${3:+"$3"} ;;
 compare) compare "${2:?DIR_A}" "${3:?DIR_B}" ;;
 *)
-  sed -n '2,10p' "$0"
+  sed -n '2,13p' "$0"
   exit 2
   ;;
 esac

@@ -1,5 +1,7 @@
 #include "dialects/fms3000/machine_rules.h"
 
+#include "dialect/profile.h"
+
 namespace gcx::fms3000 {
 
 namespace {
@@ -55,6 +57,11 @@ MachineRules machineRules() {
   // G37 X Y A: rotation by A degrees (§3.12); G69 X Y Z: per-axis factors (§3.13)
   r.transform = {'A', 0, "XYZ", "G37 without A (fms3000.md §3.12)",
                  "G69 without factors (fms3000.md §3.13)"};
+  // the transformations act in one order, polar -> rotation -> scale -> mirror (fms3000.md Q6):
+  // mirroring, the outermost, goes with rotation and scaling, and they end in any order
+  r.transformRules = {false, false, "fms3000.md §3.12-§3.14"};
+  // a cycle and its parameters hold until G80 or another cycle (001:3514-3546, §5.1)
+  r.motionCancelsCycle = false;
   r.arcL = ArcLMeaning::None;     // L is only G25's repeat count (§6.2)
   r.dwellAfterMotion = true;      // "after the motion and technological commands" (001:1623-1626)
   r.strictArcRadius = true;       // R0, chord > 2R, full circle by R: errors (001:1407-1427)
@@ -96,6 +103,14 @@ MachineRules machineRules() {
   r.compensation.outerCornerArcs = true;
   r.compensation.startUpPerpendicular = r.compensation.cancelPerpendicular = true;
   r.compensation.lookAheadBlocks = 11;
+  // G164/G165 profile blocks (001:3287-3291): only N, X, Z, G1, G2, G3, G90, G91, I, J, R, F,
+  // each with a number; the approach block may be a rapid (the manual's example approaches
+  // with G1). K is the centre word of Z under G18 (§3.5).
+  using A = GAction;
+  r.profileBlock = {{A::Linear, A::ArcCW, A::ArcCCW, A::Absolute, A::Incremental},
+                    {A::Rapid},
+                    "NXZIJKRF",
+                    "N X Z G1 G2 G3 G90 G91 I J K R F (001:3287-3291, 001:3903-3909)"};
   return r;
 }
 

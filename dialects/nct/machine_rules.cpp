@@ -69,13 +69,17 @@ MachineRules machineRules() {
              "G4 takes P (seconds, or revolutions in G95); X is not defined in NCT (Q37)"};
   r.transform = {'R', 'P', "IJK", "G68 without R: angle 0 (nct.md Q18)",
                  "G51 without P or I/J/K: scaling factor 1 (nct.md Q18)"}; // nct.md §3.15
-  r.arcL = ArcLMeaning::Turns;                                             // 000:1340
+  // mirror only in the G50 G69 state; G50 and G69 end scaling and rotation in reverse order
+  r.transformRules = {true, true, "nct.md §3.15"};
+  r.motionCancelsCycle = true;            // G00-G03 cancel a canned cycle like G80 (000:9479-9480)
+  r.arcL = ArcLMeaning::Turns;            // 000:1340
   r.lengthAlongPlaneNormal = false;       // N1416 ZAX=1: along Z (nct.md §3.16)
   r.surfaceSpeedAxis = 0;                 // nct.md §3.18: the radius is |X|
   r.setCoordinatesSIsSpindleLimit = true; // G92 S (nct.md §3.18)
   r.workOffsetNames = {"G54", "G55", "G56", "G57", "G58", "G59"};
   r.extendedWorkOffsetPrefix = "G54.1 P";
   r.extendedWorkOffsets = 99; // G54.1 P1-P99 (nct.md §3.14)
+  r.referencePoints = 4;      // G30 P1-P4 (nct.md Q15)
   // look-ahead breakers of radius compensation (nct.md §3.17.7, 000:7745-7768)
   using G = GAction;
   r.compensation.breakers = {G::StrokeLimitOn,      G::StrokeLimitOff,   G::WorkOffset,

@@ -188,6 +188,8 @@ Profile build() {
                    {20, DataEntry::ExtendedWorkOffset},
                    {10, DataEntry::ToolLength}, // gcx keeps geometry + wear per register
                    {11, DataEntry::ToolLengthWear}};
+  // G10 L52 records N<id> [P<i>] [Q<bit>] R<value> (nct-macro.md §9.1)
+  p.dataRecord = {9999, 'R', 'Q', 7, "PQGL", "G10 L52 record"};
   p.macroCallGCodes10 = {650, 660, 661};
   p.checkCallArguments = [](const ir::Block& b, diag::Engine& diags) {
     // statically only literal values are known; a variable may be vacant and skip its slot

@@ -51,6 +51,10 @@ MachineRules machineRules() {
   r.skipSense = SkipSense::RunWhenOn; // `/` blocks run only with the flag set (§1.7)
   // G4 E<seconds> (002:979); the cycle texts write G4 X (§10 item 5): both read as seconds
   r.dwell = {'E', 1, "G4 without E (seconds)", 0, "", 'X'};
+  // no rotation or scaling to combine with mirroring (wl4.md §9); the canned cycles are modal
+  // calls of %81-%89 that only G80 cancels (wl4.md §5.1)
+  r.transformRules = {false, false, "wl4.md §3.13"};
+  r.motionCancelsCycle = false;
   r.arcL = ArcLMeaning::None;          // L is a call, never an arc word
   r.arcWithinToleranceIsCircle = true; // |CE| - |CS| up to 0.002 mm: still the circle (§3.4)
   // G36 goes straight to machine zero on the named axes, whatever their values (§3.7); WL4 has
@@ -67,6 +71,9 @@ MachineRules machineRules() {
   // B is a rotary axis, or with the setup's b_chamfer = 1 the automatic chamfer's leg (§3.16)
   r.contour.chamferAxis = 'B';
   r.contour.chamferAxisKey = "b_chamfer";
+  // G38 (§3.8): the spec's static reading, the results #1000-#1027 (system_variables.cpp)
+  r.probeWithoutTouch = "G38: gcx has no probe model and assumes no touch (wl4.md §3.8): the move "
+                        "runs to its end point and back, and #1000-#1027 hold the end point";
   return r;
 }
 

@@ -6,6 +6,7 @@
 
 #include "diag/codes.h"
 #include "dialect/control_flow.h"
+#include "machine/code_names.h"
 
 namespace gcx::check {
 
@@ -140,7 +141,8 @@ void StaticChecker::words(const ir::Block& b) {
         for (int m : profile_.exclusiveMCodes)
           if (w.number == m && ++exclusiveM == 2)
             diags_.error(diag::code::ConflictingMCodes, w.range,
-                         "conflicting spindle M codes: M3, M4, M5 and M19 exclude each other");
+                         fmt::format("conflicting spindle M codes: {} exclude each other",
+                                     machine::mCodeList(profile_.exclusiveMCodes)));
       continue;
     }
     if (n < 2 || spec->repeatable || callBlock) continue; // call blocks: see below
@@ -154,23 +156,28 @@ void StaticChecker::callArguments(const ir::Block& b) {
 }
 
 void StaticChecker::dataRecord(const ir::Block& b) {
-  // G10 L52 records: N<id> [P<i>] [Q<bit>] R<value> (nct-macro.md §9.1)
+  // the dialect's record format: number, bit word, value word (Profile::dataRecord)
+  const DataRecordFormat& format = profile_.dataRecord;
   if (b.empty()) return;
-  if (b.sequence && (*b.sequence < 0 || *b.sequence > 9999))
-    diags_.error(diag::code::DataOutOfRange, b.sequenceRange,
-                 fmt::format("parameter number {} is out of range 0-9999", *b.sequence));
-  bool hasR = false;
+  if (b.sequence && (*b.sequence < 0 || *b.sequence > format.maxNumber))
+    diags_.error(
+        diag::code::DataOutOfRange, b.sequenceRange,
+        fmt::format("parameter number {} is out of range 0-{}", *b.sequence, format.maxNumber));
+  bool hasValue = false;
   for (const ir::Word& w : b.words) {
-    if (w.is('R'))
-      hasR = true;
-    else if (w.is('Q') && w.isLiteral() && (w.number < 0 || w.number > 7))
-      diags_.error(diag::code::DataOutOfRange, w.range, "bit number Q must be 0-7");
-    else if (!w.is('P') && !w.is('Q') && !w.is('G') && !w.is('L'))
+    if (format.valueWord && w.is(format.valueWord))
+      hasValue = true;
+    else if (format.bitWord && w.is(format.bitWord) && w.isLiteral() &&
+             (w.number < 0 || w.number > format.maxBit))
+      diags_.error(diag::code::DataOutOfRange, w.range,
+                   fmt::format("bit number {} must be 0-{}", format.bitWord, format.maxBit));
+    else if (w.address.size() != 1 || format.words.find(w.address[0]) == std::string::npos)
       diags_.error(diag::code::ForbiddenAddress, w.range,
-                   fmt::format("address {} is not allowed in a G10 L52 record", w.address));
+                   fmt::format("address {} is not allowed in a {}", w.address, format.name));
   }
-  if (!hasR && b.sequence)
-    diags_.error(diag::code::MissingData, b.range, "parameter record without R value");
+  if (!hasValue && b.sequence)
+    diags_.error(diag::code::MissingData, b.range,
+                 fmt::format("parameter record without {} value", format.valueWord));
 }
 
 void StaticChecker::statement(const ir::Stmt& s) {

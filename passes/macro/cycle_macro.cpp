@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "emit/number.h"
+#include "machine/code_names.h"
 
 namespace gcx::macro {
 
@@ -15,10 +16,14 @@ bool checkArguments(const CycleMacro& cycle, const CycleMacroSite& site,
   CycleMacroCall call;
   call.block = &site.block;
   call.callWord = &site.callWord;
-  for (std::size_t i = 1; i < site.args.size() && i < call.args.size(); ++i)
+  call.args.resize(site.args.size());
+  for (std::size_t i = 1; i < site.args.size(); ++i)
     if (!site.args[i].vacant) call.args[i] = site.args[i].number;
-  const motion::Plane plane = machine.state().plane;
-  call.plane = plane == motion::Plane::ZX ? 18 : plane == motion::Plane::YZ ? 19 : 17;
+  call.plane = machine.state().plane;
+  call.planeCode =
+      machine::codeName(machine.profile(), call.plane == motion::Plane::ZX   ? GAction::PlaneZX
+                                           : call.plane == motion::Plane::YZ ? GAction::PlaneYZ
+                                                                             : GAction::PlaneXY);
   call.inch = machine.state().inch;
   call.toolRadius = [&machine](int reg) {
     const auto& tools = machine.setup().tools;

@@ -1,7 +1,9 @@
 #include "cycles/pocket.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,9 +22,9 @@ struct PlaneAxes {
   int first, second, depth; // local numbers of the two plane sizes and the depth
 };
 
-PlaneAxes planeAxes(int plane) {
-  if (plane == 18) return {ArgZ, ArgX, ArgY};
-  if (plane == 19) return {ArgY, ArgZ, ArgX};
+PlaneAxes planeAxes(motion::Plane plane) {
+  if (plane == motion::Plane::ZX) return {ArgZ, ArgX, ArgY};
+  if (plane == motion::Plane::YZ) return {ArgY, ArgZ, ArgX};
   return {ArgX, ArgY, ArgZ};
 }
 
@@ -30,7 +32,7 @@ char letterOf(int arg) {
   return arg == ArgX ? 'X' : arg == ArgY ? 'Y' : 'Z';
 }
 
-// The word an argument came from; the G65 word when it was not written.
+// The word an argument came from; the call code's word when it was not written.
 const ir::Word* wordOf(const CycleMacroCall& c, char letter) {
   for (const ir::Word& w : c.block->words)
     if (w.is(letter)) return &w;
@@ -63,7 +65,8 @@ bool error2(diag::Engine& diags, const ir::Word* at, const std::string& what) {
 
 bool checkPocketCall(const CycleMacroCall& c, diag::Engine& diags) {
   const PlaneAxes ax = planeAxes(c.plane);
-  const auto& a = c.args;
+  std::vector<std::optional<double>> a = c.args; // a variable beyond the frame is vacant
+  a.resize(std::max<std::size_t>(a.size(), ArgZ + 1));
 
   // MACRO ERROR 1: depth, tool radius register D or depth of cut Q not given (000:15782-15785)
   std::vector<std::string> missing;
@@ -75,8 +78,8 @@ bool checkPocketCall(const CycleMacroCall& c, diag::Engine& diags) {
     for (std::size_t i = 1; i < missing.size(); ++i)
       list += (i + 1 == missing.size() ? " and " : ", ") + missing[i];
     diags.error(diag::code::PocketMacroError1, c.callWord->range,
-                fmt::format("MACRO ERROR 1: {} not given (G{}; cycles.md §7, 000:15782-15785)",
-                            list, c.plane));
+                fmt::format("MACRO ERROR 1: {} not given ({}; cycles.md §7, 000:15782-15785)", list,
+                            c.planeCode));
     return false;
   }
 

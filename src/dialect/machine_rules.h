@@ -122,6 +122,15 @@ struct ModelledValues {
   const char* why;            // what the others mean and why they are refused
 };
 
+/// How the programmable transformations may be combined and ended.
+struct TransformRules {
+  /// Mirroring is switched on or off only while no rotation or scaling is active.
+  bool mirrorOnlyWithoutRotationOrScaling = false;
+  /// Rotation and scaling are switched off in the reverse order of switching on.
+  bool switchOffsMustNest = false;
+  const char* spec = ""; // where the dialect states them, for messages
+};
+
 /// The meaning of L in an arc block.
 enum class ArcLMeaning : unsigned char {
   Turns, // the number of started turns (a spiral or a multi-turn arc)
@@ -156,6 +165,15 @@ struct ContourWords {
   std::string chamferAxisKey;
 };
 
+/// The blocks of a contour cycle's profile (FMS-3000 G164/G165 up to `endcont`): what they may
+/// hold. Empty: the dialect has no such cycle.
+struct ProfileBlockWords {
+  std::vector<GAction> codes;         // the G codes allowed, by action
+  std::vector<GAction> approachCodes; // allowed in the first (approach) block besides
+  std::string letters;                // the other addresses allowed
+  const char* list = "";              // how messages list what is allowed
+};
+
 /// What the machine model follows for a dialect, beside its code tables.
 struct MachineRules {
   std::vector<SettingSpec> settings;
@@ -172,6 +190,9 @@ struct MachineRules {
   SkipSense skipSense = SkipSense::SkipWhenOn;
   DwellRule dwell;
   TransformWords transform;
+  TransformRules transformRules;
+  /// A motion code ends the canned-cycle mode as the cycle-cancel code does.
+  bool motionCancelsCycle = false;
   ArcLMeaning arcL = ArcLMeaning::Turns;
   /// A dwell written with a motion runs after the motion of its block (FMS-3000 §3.9), instead
   /// of the block being a dwell only.
@@ -216,6 +237,11 @@ struct MachineRules {
   int extendedWorkOffsets = 0; // numbered 1..this
   CompensationRules compensation;
   ContourWords contour;
+  /// Reference points a reference return by number may name: P1..this.
+  int referencePoints = 0;
+  ProfileBlockWords profileBlock;
+  /// The warning of a probing move: gcx has no probe model and assumes no touch.
+  const char* probeWithoutTouch = "";
 
   const SettingSpec* setting(Setting s) const;
   const MCodeSpec* mcode(int code) const;

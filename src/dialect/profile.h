@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "dialect/machine_rules.h"
+#include "motion/event.h"
 
 namespace gcx {
 
@@ -127,11 +128,14 @@ struct GCodeSpec {
 /// A G65 call of a system cycle written as a macro program (NCT G65 P9999 pocket milling,
 /// cycles.md §5), as its argument check sees it.
 struct CycleMacroCall {
-  const ir::Block* block = nullptr;             // the call block as written: word locations
-  const ir::Word* callWord = nullptr;           // the G65 word
-  std::array<std::optional<double>, 34> args{}; // #1..#33 as bound; nullopt = vacant
-  int plane = 17;                               // 17, 18 or 19
-  bool inch = false;                            // G20: lengths in inches
+  const ir::Block* block = nullptr;   // the call block as written: word locations
+  const ir::Word* callWord = nullptr; // the call code's word
+  /// The local frame as bound (index = variable number, the dialect's frame size); nullopt =
+  /// vacant.
+  std::vector<std::optional<double>> args;
+  motion::Plane plane = motion::Plane::XY;
+  std::string planeCode; // how messages name the plane's code ("G17")
+  bool inch = false;     // lengths in inches
   /// Radius in tool register n (mm, geometry + wear), 0 when the register is not set.
   std::function<double(int)> toolRadius;
 };
@@ -169,6 +173,17 @@ struct DataEntryCode {
   DataEntry entry;
 };
 
+/// A parameter record of a data-entry section (NCT G10 L52: N<id> [P<i>] [Q<bit>] R<value>,
+/// nct-macro.md §9.1): the block's sequence number is the parameter's number.
+struct DataRecordFormat {
+  std::int64_t maxNumber = 0; // parameters are numbered 0..this
+  char valueWord = 0;         // the new value (0: the dialect has no records)
+  char bitWord = 0;           // selects one bit 0..maxBit of the parameter
+  int maxBit = 0;
+  std::string words;     // the letters allowed beside the value word
+  const char* name = ""; // how messages name a record
+};
+
 struct Profile {
   std::string name;
   const ControlFlow* controlFlow = nullptr; // calls, variables, remaps (control_flow.h)
@@ -186,6 +201,7 @@ struct Profile {
   int documentedSkipLevel = 8;            // levels above it are accepted with a warning
   std::vector<int> dataModeLCodes;        // G10 L<n> starts a data-entry section ended by G11
   std::vector<DataEntryCode> dataEntries; // what G10 L<n> sets in one block
+  DataRecordFormat dataRecord;            // the records of a data-entry section
   std::vector<int> macroCallGCodes10;     // G65, G66, G66.1: every other letter is an argument
   std::vector<int> powerOnGCodes10;       // modal state at power-on and after reset
   bool uvwIncremental = false;            // U V W are incremental X Y Z when not axes

@@ -7,6 +7,7 @@
 
 #include "diag/codes.h"
 #include "emit/number.h"
+#include "machine/code_names.h"
 #include "machine/settings.h"
 #include "motion/geometry.h"
 #include "motion/interpolator.h"
@@ -18,10 +19,6 @@ using motion::Kind;
 using motion::Plane;
 
 namespace {
-
-std::string gName(const ir::Word& w) {
-  return std::string("G").append(emit::formatNumber(w.number));
-}
 
 /// The i-th of consecutive settings (X Y Z, or U V W).
 Setting nth(Setting first, int i) {
@@ -373,7 +370,8 @@ bool Interpreter::setModal(const GCodeSpec& g) {
     if (g.action != GAction::ThreadMotion && g.action != GAction::ThreadReciprocating)
       threadLead_.reset(); // a thread sequence ends with the next G0-G3 (wl4.md §3.6)
     state_.motion = g.action;
-    if (state_.cycle == GAction::DrillCycle) cancelCycleMode(); // like G80 (000:9479-9480)
+    if (state_.cycle == GAction::DrillCycle && profile_.machine.motionCancelsCycle)
+      cancelCycleMode();
     return true;
   case GAction::PlaneXY:
     state_.plane = Plane::XY;
@@ -521,7 +519,8 @@ bool Interpreter::applyModal(const BlockWords& w) {
       turningMode_ = g;
       turningEnd_.reset();
       turningTaper_.reset();
-      if (state_.cycle == GAction::DrillCycle) cancelCycleMode();
+      if (state_.cycle == GAction::DrillCycle && profile_.machine.motionCancelsCycle)
+        cancelCycleMode();
       break;
     default:
       return fail(diag::code::NotImplemented, word.range,
@@ -565,10 +564,20 @@ bool Interpreter::transforms(const BlockWords& w) {
     }
     return c;
   };
+  // the state without scaling and rotation, named by the codes that end them ("G50 G69")
+  auto plainState = [&] {
+    std::string codes = codeName(profile_, GAction::ScaleOff);
+    const std::string rotateOff = codeName(profile_, GAction::RotateOff);
+    return codes.empty() ? rotateOff : rotateOff.empty() ? codes : codes + " " + rotateOff;
+  };
+  const TransformRules& rules = profile_.machine.transformRules;
+  const bool mirrorRefused =
+      rules.mirrorOnlyWithoutRotationOrScaling && (transforms_.rotating() || transforms_.scaling());
   if (const ir::Word* g = w.findAction(GAction::MirrorOn)) {
-    if (transforms_.rotating() || transforms_.scaling())
-      return fail(diag::code::MirrorWithTransform, g->range,
-                  "mirror may only be switched on in G50 G69 state (nct.md §3.15)");
+    if (mirrorRefused)
+      return fail(
+          diag::code::MirrorWithTransform, g->range,
+          fmt::format("mirror may only be switched on in {} state ({})", plainState(), rules.spec));
     unsigned mask = 0;
     for (int a = 0; a < 3; ++a)
       if (w.axis[a]) mask |= 1u << a;
@@ -576,26 +585,33 @@ bool Interpreter::transforms(const BlockWords& w) {
   }
   if (w.has(GAction::MirrorBySign) && !mirrorBySign(w)) return false;
   if (const ir::Word* g = w.findAction(GAction::MirrorOff)) {
-    if (transforms_.rotating() || transforms_.scaling())
+    if (mirrorRefused)
       return fail(diag::code::MirrorWithTransform, g->range,
-                  "mirror may only be switched off in G50 G69 state (nct.md §3.15)");
+                  fmt::format("mirror may only be switched off in {} state ({})", plainState(),
+                              rules.spec));
     unsigned mask = 0;
     for (int a = 0; a < 3; ++a)
       if (w.axis[a]) mask |= 1u << a;
     transforms_.cancelMirror(mask ? mask : 7u);
   }
   if (const ir::Word* g = w.findAction(GAction::RotateOff)) {
-    if (transforms_.rotating() && transforms_.innermost() != Transforms::Kind::Rotate)
+    if (rules.switchOffsMustNest && transforms_.rotating() &&
+        transforms_.innermost() != Transforms::Kind::Rotate)
       return fail(diag::code::TransformNesting, g->range,
-                  "G69 while G51 switched on after G68 is still active: switch-offs must nest "
-                  "(nct.md §3.15)");
+                  fmt::format("{} while {} switched on after {} is still active: switch-offs "
+                              "must nest ({})",
+                              gName(*g), codeName(profile_, GAction::ScaleOn),
+                              codeName(profile_, GAction::RotateOn), rules.spec));
     transforms_.cancel(Transforms::Kind::Rotate);
   }
   if (const ir::Word* g = w.findAction(GAction::ScaleOff)) {
-    if (transforms_.scaling() && transforms_.innermost() != Transforms::Kind::Scale)
+    if (rules.switchOffsMustNest && transforms_.scaling() &&
+        transforms_.innermost() != Transforms::Kind::Scale)
       return fail(diag::code::TransformNesting, g->range,
-                  "G50 while G68 switched on after G51 is still active: switch-offs must nest "
-                  "(nct.md §3.15)");
+                  fmt::format("{} while {} switched on after {} is still active: switch-offs "
+                              "must nest ({})",
+                              gName(*g), codeName(profile_, GAction::RotateOn),
+                              codeName(profile_, GAction::ScaleOn), rules.spec));
     transforms_.cancel(Transforms::Kind::Scale);
   }
   const TransformWords& words = profile_.machine.transform;
@@ -651,7 +667,8 @@ bool Interpreter::applyNonMotion(const BlockWords& w, bool& consumed) {
     return dataInput(w, ir::Block{});
   }
   if (w.has(GAction::DataInputEnd)) dataMode_ = false;
-  if (w.has(GAction::DiameterMode)) { // G10.9 X1: X in diameter, X0: in radius (nct.md §3.8)
+  // X1: X in diameter, X0: in radius (nct.md §3.8)
+  if (const ir::Word* g = w.findAction(GAction::DiameterMode)) {
     consumed = true;
     for (int a = 0; a < 3; ++a)
       if (w.axis[a]) {
@@ -661,7 +678,7 @@ bool Interpreter::applyNonMotion(const BlockWords& w, bool& consumed) {
           state_.diameterAxes &= ~(1u << a);
         else
           return fail(diag::code::DataOutOfRange, w.axis[a]->range,
-                      "G10.9 takes 1 (diameter) or 0 (radius) per axis");
+                      fmt::format("{} takes 1 (diameter) or 0 (radius) per axis", gName(*g)));
       }
     return true;
   }
@@ -676,7 +693,9 @@ bool Interpreter::applyNonMotion(const BlockWords& w, bool& consumed) {
     if (w.s && profile_.machine.setCoordinatesSIsSpindleLimit) { // nct.md §3.18
       if (w.hasAxisWord())
         return fail(diag::code::ForbiddenAddress, w.s->range,
-                    "G92 S (spindle limit) and G92 coordinates in one block (nct.md Q28)");
+                    fmt::format("{0} S (spindle limit) and {0} coordinates in one block (nct.md "
+                                "Q28)",
+                                gName(*g)));
       state_.maxSpindleSpeed = w.s->number;
       return true;
     }
@@ -698,9 +717,11 @@ bool Interpreter::applyNonMotion(const BlockWords& w, bool& consumed) {
   }
   if (const ir::Word* g = w.findAction(GAction::OtherReferenceReturn)) {
     consumed = true;
-    if (!w.p || w.p->number < 1 || w.p->number > 4 || w.p->number != std::floor(w.p->number))
+    const int points = profile_.machine.referencePoints;
+    if (!w.p || w.p->number < 1 || w.p->number > points || w.p->number != std::floor(w.p->number))
       return fail(diag::code::MissingData, g->range,
-                  "G30 needs P1 to P4 to name the reference point (nct.md Q15)");
+                  fmt::format("{} needs P1 to P{} to name the reference point (nct.md Q15)",
+                              gName(*g), points));
     return referenceReturn(w, static_cast<int>(w.p->number));
   }
   return true;
@@ -784,14 +805,16 @@ bool Interpreter::directReferenceReturn(const BlockWords& w, int point) {
 
 bool Interpreter::dataInput(const BlockWords& w, const ir::Block& dataBlock) {
   if (dataBlock.kind == ir::BlockKind::Data) {
-    // G10 L52 parameter record N<id> [P] [Q<bit>] R<value> (nct-macro.md §9.1)
-    if (!dataBlock.sequence) return true;
-    const ir::Word* r = dataBlock.find('R');
+    // a parameter record: its number, the bit word and the value (Profile::dataRecord)
+    const DataRecordFormat& format = profile_.dataRecord;
+    if (!dataBlock.sequence || !format.valueWord) return true;
+    const ir::Word* r = dataBlock.find(format.valueWord);
     if (!r || r->kind != ir::ValueKind::Number) return true;
     const MachineRules& rules = profile_.machine;
     std::string key = fmt::format("{}{:0{}}", rules.parameterKeyPrefix, *dataBlock.sequence,
                                   rules.parameterKeyDigits);
-    if (const ir::Word* q = dataBlock.find('Q')) key += fmt::format(".{}", q->number);
+    if (const ir::Word* q = format.bitWord ? dataBlock.find(format.bitWord) : nullptr)
+      key += fmt::format(".{}", q->number);
     const double old = setup_.parameter(key, 0);
     setup_.parameters[key] = r->incremental ? old + r->number : r->number;
     if (const char* tolerance = settingKey(profile_, Setting::ArcRadiusTolerance))
@@ -866,7 +889,7 @@ bool Interpreter::dataInput(const BlockWords& w, const ir::Block& dataBlock) {
     return true;
   }
   return fail(diag::code::NotImplemented, g->range,
-              fmt::format("G10 L{} is not implemented yet", l));
+              fmt::format("{} L{} is not implemented yet", gName(*g), l));
 }
 
 double Interpreter::coordinate(int axis, const ir::Word& w) const {

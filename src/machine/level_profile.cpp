@@ -4,26 +4,30 @@
 // do, machine/turning_cycles.cpp) and the cycle runs from И.Т. with them.
 #include <fmt/format.h>
 
-#include <string_view>
+#include <algorithm>
 
 #include "cycles/level_turning.h"
 #include "diag/codes.h"
 #include "emit/number.h"
+#include "machine/code_names.h"
 #include "machine/interpreter.h"
 
 namespace gcx::machine {
 
 namespace {
 
-// 001:3287-3291: only N, X, Z, G1, G2, G3, G90, G91, I, J, R, F, each with a number; the
-// approach block may be a rapid (the manual's example approaches with G1). K is the centre word
-// of Z under G18 (§3.5).
-bool allowedInProfile(const ir::Word& w, bool approach) {
-  if (w.is('G'))
-    return w.number == 1 || w.number == 2 || w.number == 3 || w.number == 90 || w.number == 91 ||
-           (approach && w.number == 0);
-  return w.address.size() == 1 &&
-         std::string_view("NXZIJKRF").find(w.address[0]) != std::string_view::npos;
+// What a profile block may hold is the dialect's (MachineRules::profileBlock, 001:3287-3291).
+bool allowedInProfile(const Profile& profile, const ir::Word& w, bool approach) {
+  const ProfileBlockWords& rules = profile.machine.profileBlock;
+  auto among = [](const std::vector<GAction>& codes, GAction a) {
+    return std::find(codes.begin(), codes.end(), a) != codes.end();
+  };
+  if (w.is('G')) {
+    const GCodeSpec* g = profile.gcode(w.number);
+    return g &&
+           (among(rules.codes, g->action) || (approach && among(rules.approachCodes, g->action)));
+  }
+  return w.address.size() == 1 && rules.letters.find(w.address[0]) != std::string::npos;
 }
 
 } // namespace
@@ -35,12 +39,11 @@ bool Interpreter::profileBlock(const ir::Block& block, const motion::Provenance&
                 "a statement inside the profile of G164/G165 (001:3287-3291)");
   const bool approach = pendingProfile_->blocks.empty();
   for (const ir::Word& w : block.words)
-    if (!allowedInProfile(w, approach))
+    if (!allowedInProfile(profile_, w, approach))
       return fail(diag::code::FmsProfile, w.range,
-                  fmt::format("{} is not allowed in the profile of {}: only N X Z G1 G2 G3 G90 "
-                              "G91 I J K R F (001:3287-3291, 001:3903-3909)",
+                  fmt::format("{} is not allowed in the profile of {}: only {}",
                               w.is('G') ? "G" + emit::formatNumber(w.number) : w.address,
-                              levelCode_));
+                              levelCode_, profile_.machine.profileBlock.list));
   if (block.kind == ir::BlockKind::Normal && !block.words.empty())
     pendingProfile_->blocks.push_back({block, from});
   return true;
@@ -50,9 +53,9 @@ bool Interpreter::profileCycle() {
   const PendingProfile pending = std::move(*pendingProfile_);
   pendingProfile_.reset();
   if (state_.plane != motion::Plane::ZX)
-    return fail(
-        diag::code::FmsCycleParameters, pending.code,
-        fmt::format("{} turns in the lathe plane: G18 first (fms3000.md §5.3)", levelCode_));
+    return fail(diag::code::FmsCycleParameters, pending.code,
+                fmt::format("{} turns in the lathe plane: {} first (fms3000.md §5.3)", levelCode_,
+                            codeName(profile_, GAction::PlaneZX)));
   if (pending.blocks.empty())
     return fail(diag::code::FmsProfile, pending.code,
                 fmt::format("{} needs an approach block and a profile before endcont "

@@ -7,6 +7,7 @@
 
 #include "cycles/level_turning.h"
 #include "diag/codes.h"
+#include "machine/code_names.h"
 #include "machine/interpreter.h"
 #include "motion/geometry.h"
 
@@ -15,9 +16,9 @@ namespace gcx::machine {
 bool Interpreter::levelTurning(const SourceRange& code, const cycles::Profile* profile) {
   if (levelCycle_ == cycles::LevelCycle::Fillet && state_.plane != motion::Plane::ZX)
     return fail(diag::code::FmsCycleParameters, code,
-                fmt::format("{} turns its fillet in the lathe plane: G18 first (fms3000.md "
+                fmt::format("{} turns its fillet in the lathe plane: {} first (fms3000.md "
                             "§5.3.2)",
-                            levelCode_));
+                            levelCode_, codeName(profile_, GAction::PlaneZX)));
   cycles::LevelTurnRequest req;
   req.cycle = *levelCycle_;
   req.code = levelCode_;

@@ -3,15 +3,19 @@
 #include <fmt/format.h>
 
 #include "diag/codes.h"
+#include "machine/code_names.h"
 #include "machine/interpreter.h"
 
 namespace gcx::machine {
 
 bool Interpreter::mirrorBySign(const BlockWords& w) {
+  const std::string code = gName(*w.findAction(GAction::MirrorBySign));
   if (w.s) {
     if (w.hasAxisWord())
       return fail(diag::code::ForbiddenAddress, w.s->range,
-                  "G51 S (spindle limit) and G51 mirror words in one block (wl4.md §3.14)");
+                  fmt::format("{0} S (spindle limit) and {0} mirror words in one block (wl4.md "
+                              "§3.14)",
+                              code));
     state_.maxSpindleSpeed = w.s->number;
     return true;
   }
@@ -21,9 +25,9 @@ bool Interpreter::mirrorBySign(const BlockWords& w) {
     if (!x) continue;
     if (x->number != 1 && x->number != -1)
       return fail(diag::code::DataOutOfRange, x->range,
-                  fmt::format("G51 {}{}: an axis word of G51 is -1 (mirror on) or 1 (off) "
+                  fmt::format("{0} {1}{2}: an axis word of {0} is -1 (mirror on) or 1 (off) "
                               "(wl4.md §3.13)",
-                              x->address, x->number));
+                              code, x->address, x->number));
     (x->number < 0 ? on : off) |= 1u << a;
   }
   if (off) transforms_.cancelMirror(off);

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "diag/codes.h"
+#include "machine/code_names.h"
 #include "machine/interpreter.h"
 #include "motion/geometry.h"
 
@@ -47,7 +48,8 @@ std::optional<bool> Interpreter::polePolarBlock(const ir::Block& block) {
   if (!pole && !pole_) return std::nullopt;
   if (plane) // 001:3859
     return fail(diag::code::FmsPolarRule, plane->range,
-                "no plane change in polar coordinates: G35 first (fms3000.md §3.11)");
+                fmt::format("no plane change in polar coordinates: {} first (fms3000.md §3.11)",
+                            codeName(profile_, GAction::RotateOff)));
   const motion::PlaneAxes ax = motion::axesOf(state_.plane);
   const char first = kAxes[static_cast<std::size_t>(ax.first)];
   const char second = kAxes[static_cast<std::size_t>(ax.second)];
@@ -61,14 +63,14 @@ std::optional<bool> Interpreter::polePolarBlock(const ir::Block& block) {
         p2 = &w;
       else if (isAxis(w, kAxes) || isAxis(w, kOtherAxes) || w.is('I') || w.is('A'))
         return fail(diag::code::FmsPolarRule, w.range,
-                    fmt::format("G36 takes the pole on the plane's axes {} and {}, not {} "
+                    fmt::format("{} takes the pole on the plane's axes {} and {}, not {} "
                                 "(fms3000.md §3.11)",
-                                first, second, w.address));
+                                gName(*pole), first, second, w.address));
     }
     if (!p1 || !p2)
-      return fail(
-          diag::code::FmsPolarRule, pole->range,
-          fmt::format("G36 without the pole: write {} and {} (fms3000.md §3.11)", first, second));
+      return fail(diag::code::FmsPolarRule, pole->range,
+                  fmt::format("{} without the pole: write {} and {} (fms3000.md §3.11)",
+                              gName(*pole), first, second));
     pole_ = {p1->number, p2->number};
     if (const GCodeSpec* g = profile_.gcode(pole->number);
         g->group > 0 && g->group < static_cast<int>(modalCodes_.size()))

@@ -1,7 +1,7 @@
 // The WL4 probing move G38 (wl4.md §3.8): a G0-G3 block that runs toward its end point and
 // back to its start along the same path; a touch would end the outbound move early. gcx has no
 // probe model, so it takes the spec's static reading: no touch, the move runs to its end point
-// and back (a warning says so), and the results #1000-#1027 hold that end point. The canonical
+// and back (a warning says so), and the dialect's results hold that end point. The canonical
 // output writes the two moves as they are: LinuxCNC's G38.2 would stop with an error without a
 // touch, so it cannot say "no touch" (docs/wl4.md). A skip move (FMS-3000 G32, fms3000.md §3.17)
 // takes the same reading without the way back: the move runs to its end point.
@@ -16,9 +16,7 @@ namespace gcx::machine {
 bool Interpreter::probeBack(const ir::Word& code, const Vec3& from) {
   probing_ = false;
   if (probePath_.empty()) return true; // no motion, nothing to probe
-  diags_.warning(diag::code::Wl4ProbeWithoutTouch, code.range,
-                 "G38: gcx has no probe model and assumes no touch (wl4.md §3.8): the move runs "
-                 "to its end point and back, and #1000-#1027 hold the end point");
+  diags_.warning(diag::code::Wl4ProbeWithoutTouch, code.range, profile_.machine.probeWithoutTouch);
   probe_.machine = machine_;
   probe_.work = program_;
   probe_.distance = program_ - from;

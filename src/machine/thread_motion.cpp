@@ -11,12 +11,13 @@
 
 #include "diag/codes.h"
 #include "emit/number.h"
+#include "machine/code_names.h"
 #include "machine/interpreter.h"
 
 namespace gcx::machine {
 
 bool Interpreter::threadMove(const BlockWords& w, const Vec3& to, const motion::Extra& extraTo) {
-  const char* code = state_.motion == GAction::ThreadReciprocating ? "G33" : "G32";
+  const std::string code = codeName(profile_, state_.motion);
   if (!threadLead_) {
     for (const ir::Word* word : {w.p, w.ijk[0]})
       if (word && word->number != 0)

@@ -205,6 +205,33 @@ TEST(MachineRules, TransformWordsComeFromTheProfile) {
   EXPECT_EQ(run(nct::profile(), fmsText), (Lines{"L 10,0,0 F100", "L 5,1,0 F100", "END"}));
 }
 
+// Whether mirroring goes with a rotation or scaling and whether their switch-offs must nest are
+// the dialect's rules (nct.md §3.15; FMS-3000 composes them in one order, fms3000.md Q6).
+TEST(MachineRules, TransformRulesComeFromTheProfile) {
+  const std::string mirror = "G17 G90 G68 X0 Y0 R90\nG51.1 X50\nG1 X10 Y0 F100\n";
+  EXPECT_EQ(run(nct::profile(), mirror), (Lines{"2:1 2001"}));
+  const Profile mixed =
+      nctWith([](MachineRules& r) { r.transformRules.mirrorOnlyWithoutRotationOrScaling = false; });
+  // X10 Y0 turned to X0 Y10, then mirrored about X50: the mirror acts last
+  EXPECT_EQ(run(mixed, mirror), (Lines{"L 100,10,0 F100", "END"}));
+  const std::string nest = "G17 G90 G51 X0 Y0 P2\nG68 X0 Y0 R90\nG50\nG1 X10 Y0 F100\n";
+  EXPECT_EQ(run(nct::profile(), nest), (Lines{"3:1 GCX034"}));
+  const Profile anyOrder =
+      nctWith([](MachineRules& r) { r.transformRules.switchOffsMustNest = false; });
+  EXPECT_EQ(run(anyOrder, nest), (Lines{"L 0,10,0 F100", "END"})); // the rotation stays
+}
+
+// NCT: G00-G03 cancel a canned cycle as G80 does (000:9479-9480); where a motion code does not,
+// the next block with axis words drills again.
+TEST(MachineRules, MotionCodeCancelsTheCycleWhereTheDialectSaysSo) {
+  const std::string cycle = "G17 G90 G0 X0 Y0 Z10\nG81 X10 Y0 Z-5 R2 F100\n";
+  EXPECT_EQ(run(nct::profile(), cycle + "G1 X20\n"),
+            (Lines{"R 0,0,10", "R 10,0,10", "R 10,0,2", "L 10,0,-5 F100", "R 10,0,10",
+                   "L 20,0,10 F100", "END"}));
+  const Profile kept = nctWith([](MachineRules& r) { r.motionCancelsCycle = false; });
+  EXPECT_EQ(run(kept, cycle + "G1 X20\n"), run(nct::profile(), cycle + "X20\n"));
+}
+
 TEST(MachineRules, WorkOffsetNamesComeFromTheProfile) {
   machine::Setup s;
   s.workOffsets = {
