@@ -127,6 +127,7 @@ std::string Interpreter::workOffsetKey(int offset) const {
 }
 
 Vec3 Interpreter::currentWorkOffset() const {
+  if (setup_.workOffsets.empty()) return Vec3::Zero(); // asked per move: no key to build
   const auto o = setup_.workOffset(workOffsetKey(state_.workOffset));
   return Vec3(o[0], o[1], o[2]);
 }
@@ -309,7 +310,7 @@ bool Interpreter::executeBlock(const ir::Block& block) {
   pendingTurning_ = nullptr;
   if (!applyModal(w)) return false;
   if (!radiusCompensation(w, before)) return false;
-  if (w.hasAxisWord() && !w.has(GAction::DataInput)) {
+  if (!rotations_.empty() && w.hasAxisWord() && !w.has(GAction::DataInput)) { // none: no key
     const std::string key = workOffsetKey(state_.workOffset);
     for (int plane = 1; plane <= 3; ++plane)
       if (workRotation(key, plane) != 0)
