@@ -1,6 +1,7 @@
 #include "machine/interpreter.h"
 #include "machine/cycle_state.h"
 #include "machine/helix.h"
+#include "machine/reused_block_words.h"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -278,7 +279,8 @@ bool Interpreter::executeBlock(const ir::Block& block) {
         return levelCycleBlock(block, g, *spec);
   if (const auto repeated = levelCycleRepeat(block)) return *repeated;
   if (const auto polar = polePolarBlock(block)) return *polar;
-  BlockWords w;
+  ReusedBlockWords reused;
+  BlockWords& w = reused.words();
   if (const ir::Word* bad = sortWords(block, profile_, w))
     return fail(diag::code::ExpressionNotExpanded, bad->range,
                 fmt::format("the value of {} is an expression; expressions are evaluated by the "
