@@ -36,9 +36,7 @@ void CanonicalEmitter::begin(std::string_view code) {
 }
 
 void CanonicalEmitter::word(char letter, double v) {
-  line_ += ' ';
-  line_ += letter;
-  motion::appendDecimal(line_, v, 6);
+  motion::appendWord(line_, letter, v, 6);
 }
 
 void CanonicalEmitter::xyz(const motion::Vec3& p) {
