@@ -1,6 +1,7 @@
 #include "passes/macro/expander.h"
 
 #include <array>
+#include <charconv>
 
 #include <fmt/format.h>
 #include <fstream>
@@ -69,9 +70,13 @@ void Expander::fillProvenance(const ir::Block& b, motion::Provenance& p) const {
       const ir::Block& head = f.program->blocks[l.head];
       motion::Frame& loop = next();
       loop.call = head.range.begin;
-      loop.what.clear(); // "loop DO1 iteration 3"
-      fmt::format_to(std::back_inserter(loop.what), "loop DO{} iteration {}",
-                     head.stmts.front().loopId, l.iteration);
+      // "loop DO1 iteration 3", for every block of every iteration: to_chars, not fmt's parser
+      std::array<char, 24> digits;
+      loop.what.assign("loop DO");
+      loop.what.append(digits.data(),
+                       std::to_chars(digits.begin(), digits.end(), head.stmts.front().loopId).ptr);
+      loop.what.append(" iteration ");
+      loop.what.append(digits.data(), std::to_chars(digits.begin(), digits.end(), l.iteration).ptr);
     }
   }
   p.chain.resize(n);
