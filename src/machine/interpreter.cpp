@@ -20,6 +20,13 @@ using motion::Plane;
 
 namespace {
 
+// to = from, without the vector assignment's work when both chains are empty (a streamed
+// program's every block and event)
+void setProvenance(motion::Provenance& to, const motion::Provenance& from) {
+  to.at = from.at;
+  if (!to.chain.empty() || !from.chain.empty()) to.chain = from.chain;
+}
+
 std::string gName(const ir::Word& w) {
   return std::string("G").append(emit::formatNumber(w.number));
 }
@@ -161,7 +168,7 @@ void Interpreter::reexpress() {
 
 void Interpreter::emit(motion::Event e) {
   if (stopped_) return;
-  e.from = from_;
+  setProvenance(e.from, from_);
   if ((e.kind == Kind::Rapid || e.kind == Kind::Feed || e.kind == Kind::Arc) && !admitMotion(e)) {
     stopped_ = true;
     return;
@@ -257,7 +264,7 @@ void Interpreter::emitLine(Kind kind, const Vec3& to, const motion::Extra& extra
 
 bool Interpreter::execute(const ir::Block& block, const motion::Provenance& from) {
   if (ended_ || stopped_) return false;
-  from_ = from;
+  setProvenance(from_, from);
   blockRange_ = block.range;
   blockMoves_ = 0;
   ++blockSerial_;
