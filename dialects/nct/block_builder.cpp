@@ -142,18 +142,23 @@ void BlockBuilder::finish() {
   if (reuse_) out_.words.resize(words_);
 }
 
-ir::Word& BlockBuilder::newWord(std::string_view address, std::size_t pos, std::size_t len) {
-  ir::Word* slot;
-  if (!reuse_) {
-    slot = &out_.words.emplace_back();
-  } else if (words_ < out_.words.size()) {
-    slot = &out_.words[words_++];
-    resetWord(*slot);
-  } else {
-    slot = &out_.words.emplace_back();
-    ++words_;
+namespace {
+// The word newWord fills: a new one, or with reuse the next word of the block before, reset.
+// Inline, so the fast path's literalWord does not pay a call per word.
+inline ir::Word& wordSlot(std::vector<ir::Word>& words, bool reuse, std::size_t& used) {
+  if (!reuse) return words.emplace_back();
+  ++used;
+  if (used <= words.size()) {
+    ir::Word& w = words[used - 1];
+    resetWord(w);
+    return w;
   }
-  ir::Word& w = *slot;
+  return words.emplace_back();
+}
+} // namespace
+
+ir::Word& BlockBuilder::newWord(std::string_view address, std::size_t pos, std::size_t len) {
+  ir::Word& w = wordSlot(out_.words, reuse_, words_);
   if (address.size() == 1 && w.address.size() == 1)
     w.address[0] = address[0]; // the usual case of a reused word: one letter for another
   else
@@ -178,7 +183,13 @@ void BlockBuilder::literalWord(std::string_view address, std::size_t pos, std::s
 
 void BlockBuilder::literalWord(char letter, std::size_t pos, std::size_t len, bool incremental,
                                char signText, std::string_view digits, double value) {
-  ir::Word& w = newWord(std::string_view(&letter, 1), pos, len);
+  ir::Word& w = wordSlot(out_.words, reuse_, words_); // newWord's steps, inline
+  if (w.address.size() == 1)
+    w.address[0] = letter;
+  else
+    w.address.assign(1, letter);
+  w.range = range(pos, len);
+  w.order = static_cast<std::uint32_t>(pos);
   w.incremental = incremental;
   w.kind = ir::ValueKind::Number;
   w.number = signText == '-' ? -value : value;

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string_view>
 
 namespace gcx::nct {
 
@@ -55,7 +56,10 @@ constexpr double kPowersOfTen[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
 // (Clinger's fast path: a mantissa below 10^15 and a power of ten up to 10^15 are exact doubles,
 // and one division of exact operands is correctly rounded), and so many digits are never too
 // many significant ones (nct.md §1.2 rule 2).
-bool scanNumber(const std::string& s, std::size_t& i, double& value, bool& exact) {
+// The text is a string_view and the position a local: writes through a reference would make
+// the compiler reload both for every digit.
+bool scanNumber(std::string_view s, std::size_t& pos, double& value, bool& exact) {
+  std::size_t i = pos;
   const std::size_t start = i;
   std::uint64_t mantissa = 0;
   while (i < s.size() && isDigit(s[i]))
@@ -68,10 +72,12 @@ bool scanNumber(const std::string& s, std::size_t& i, double& value, bool& exact
       mantissa = mantissa * 10 + static_cast<std::uint64_t>(s[i++] - '0');
     while (i < s.size() && isDigit(s[i]))
       ++i;
+    pos = i;
     if (frac == start + 1 && i == frac) return false; // a lone '.'
     fraction = i - frac;
     digits += fraction;
   }
+  pos = i;
   exact = digits <= 15;
   if (exact) {
     const double m = static_cast<double>(mantissa);
@@ -84,7 +90,7 @@ bool scanNumber(const std::string& s, std::size_t& i, double& value, bool& exact
 
 FastResult parseFast(const front::RawBlock& raw, ir::Block& out, diag::Engine& diags) {
   if (!raw.plain) return FastResult::Declined;
-  const std::string& s = raw.lexText;
+  const std::string_view s = raw.lexText;
   const std::size_t n = s.size();
   // A block rarely has more than a dozen words; a fixed buffer keeps the fast path allocation-free.
   std::array<Piece, 48> pieces;

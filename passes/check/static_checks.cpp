@@ -81,7 +81,9 @@ void StaticChecker::words(const ir::Block& b) {
   int gCount = 0, mCount = 0, exclusiveM = 0;
   auto& counts = wordCounts_; // a member: its capacity serves every block
   counts.clear();
+  std::array<int, 26> letterCounts{}; // one-letter addresses, the usual words, by index
   auto countOf = [&](std::string_view a) -> int& {
+    if (a.size() == 1 && a[0] >= 'A' && a[0] <= 'Z') return letterCounts[a[0] - 'A'];
     for (auto& [addr, n] : counts)
       if (addr.size() == a.size() && (a.size() == 1 ? addr[0] == a[0] : addr == a)) return n;
     counts.emplace_back(a, 0);
@@ -122,7 +124,10 @@ void StaticChecker::words(const ir::Block& b) {
       }
       // the words after a cycle code are its parameters, a set of their own: FMS `X30 Y10 G88
       // U2 Z-10 X0.2 Y-0.1` positions at X30 Y10, then shifts by X0.2 Y-0.1 (fms3000.md §5.1)
-      if (g->action == GAction::LevelDrillCycle) counts.clear();
+      if (g->action == GAction::LevelDrillCycle) {
+        counts.clear();
+        letterCounts.fill(0);
+      }
       if (g->group != 0 && g->group < static_cast<int>(groupSeen.size()) &&
           !profile_.lastOfModalGroupWins) {
         if (groupSeen[g->group]++)

@@ -1,6 +1,7 @@
 #include "passes/macro/expander.h"
 
 #include <array>
+#include <charconv>
 
 #include <fmt/format.h>
 #include <fstream>
@@ -69,9 +70,13 @@ void Expander::fillProvenance(const ir::Block& b, motion::Provenance& p) const {
       const ir::Block& head = f.program->blocks[l.head];
       motion::Frame& loop = next();
       loop.call = head.range.begin;
-      loop.what.clear(); // "loop DO1 iteration 3"
-      fmt::format_to(std::back_inserter(loop.what), "loop DO{} iteration {}",
-                     head.stmts.front().loopId, l.iteration);
+      // "loop DO1 iteration 3", for every block of every iteration: to_chars, not fmt's parser
+      std::array<char, 24> digits;
+      loop.what.assign("loop DO");
+      loop.what.append(digits.data(),
+                       std::to_chars(digits.begin(), digits.end(), head.stmts.front().loopId).ptr);
+      loop.what.append(" iteration ");
+      loop.what.append(digits.data(), std::to_chars(digits.begin(), digits.end(), l.iteration).ptr);
     }
   }
   p.chain.resize(n);
@@ -191,11 +196,21 @@ bool mayNeedExpansion(const std::string& path, const Profile& profile) {
     // a marker that may run past the chunk waits for the next one
     const std::size_t scanEnd = last ? text.size() : text.size() - (longest - 1);
     const auto* bytes = reinterpret_cast<const unsigned char*>(text.data());
-    for (std::size_t i = 0; i < scanEnd; ++i) {
-      const unsigned char k = interest[bytes[i]];
-      if (k == 0) continue;
-      if (k & 1) return true;
-      if (markerAt(text, i)) return true;
+    for (std::size_t i = 0; i < scanEnd;) {
+      // eight bytes of no interest (most of a CAM program's) pass with one test
+      if (i + 8 <= scanEnd &&
+          (interest[bytes[i]] | interest[bytes[i + 1]] | interest[bytes[i + 2]] |
+           interest[bytes[i + 3]] | interest[bytes[i + 4]] | interest[bytes[i + 5]] |
+           interest[bytes[i + 6]] | interest[bytes[i + 7]]) == 0) {
+        i += 8;
+        continue;
+      }
+      for (const std::size_t stop = std::min(i + 8, scanEnd); i < stop; ++i) {
+        const unsigned char k = interest[bytes[i]];
+        if (k == 0) continue;
+        if (k & 1) return true;
+        if (markerAt(text, i)) return true;
+      }
     }
     if (last) return false;
     text.erase(0, scanEnd);

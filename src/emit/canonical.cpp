@@ -11,6 +11,20 @@ namespace gcx::emit {
 
 using motion::Kind;
 
+namespace {
+// What ostream::write does for a good stream that is neither tied nor unit-buffered (a file,
+// a string): hand the line to its buffer in one call. Its sentry object per line cost more
+// than the copy.
+void writeLine(std::ostream& out, const std::string& line) {
+  const auto n = static_cast<std::streamsize>(line.size());
+  if (!out.good() || out.tie() || (out.flags() & std::ios::unitbuf)) {
+    out.write(line.data(), n);
+    return;
+  }
+  if (out.rdbuf()->sputn(line.data(), n) != n) out.setstate(std::ios::badbit);
+}
+} // namespace
+
 CanonicalEmitter::CanonicalEmitter(std::ostream& out, CanonicalOptions opt)
     : out_(out), opt_(std::move(opt)) {}
 
@@ -22,9 +36,7 @@ void CanonicalEmitter::begin(std::string_view code) {
 }
 
 void CanonicalEmitter::word(char letter, double v) {
-  line_ += ' ';
-  line_ += letter;
-  motion::appendDecimal(line_, v, 6);
+  motion::appendWord(line_, letter, v, 6);
 }
 
 void CanonicalEmitter::xyz(const motion::Vec3& p) {
@@ -54,7 +66,7 @@ void CanonicalEmitter::end(const motion::Event& e) {
     }
   }
   line_ += '\n';
-  out_.write(line_.data(), static_cast<std::streamsize>(line_.size()));
+  writeLine(out_, line_);
 }
 
 void CanonicalEmitter::line(std::string_view text, const motion::Event& e) {

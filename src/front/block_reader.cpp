@@ -72,6 +72,9 @@ void BlockReader::classifyForLexText() {
     lexClasses_[static_cast<unsigned char>(rules_.bracketComment->open)] = CommentOpen;
     lexClasses_[static_cast<unsigned char>(rules_.bracketComment->close)] = CommentClose;
   }
+  for (unsigned c = 0; c < 256; ++c)
+    scanClasses_[c] =
+        static_cast<unsigned char>(classes_[c] | (lexClasses_[c] == PlainText ? 0 : kLexWork));
 }
 
 bool BlockReader::fill() {
@@ -132,9 +135,13 @@ bool BlockReader::next(RawBlock& out) {
     const std::size_t size = buf_.size();
     while (pos_ < size) {
       // the bulk of a program: a run of bytes without meaning to the reader, copied at once
-      std::size_t run = pos_;
-      while (run < size && classes_[static_cast<unsigned char>(data[run])] == Plain)
-        ++run;
+      std::size_t run = pos_, lexWork = 0;
+      for (; run < size; ++run) {
+        const unsigned char k = scanClasses_[static_cast<unsigned char>(data[run])];
+        if ((k & ~kLexWork) != Plain) break;
+        lexWork += k >> 7;
+      }
+      curLexWork_ += lexWork;
       if (run > pos_) {
         append(data + pos_, run - pos_);
         offset_ += run - pos_;
@@ -175,6 +182,7 @@ bool BlockReader::next(RawBlock& out) {
         }
       }
       append(&c, 1);
+      ++curLexWork_; // a byte of meaning to the cutter means something to normalize() too
     }
   }
 }
@@ -191,6 +199,7 @@ bool BlockReader::finishBlock(RawBlock& out) {
     curBreaks_.clear();
     curLineOffsets_.clear();
     overflow_ = false;
+    curLexWork_ = 0;
   };
   if (overflow_) {
     diags_.error(
@@ -199,7 +208,11 @@ bool BlockReader::finishBlock(RawBlock& out) {
     reset();
     return false;
   }
-  if (!cur_.empty() && cur_.back() == '\r') cur_.pop_back();
+  if (!cur_.empty() && cur_.back() == '\r') {
+    cur_.pop_back();
+    --curLexWork_; // it was counted: a CR is never PlainText
+  }
+  const bool lexWork = curLexWork_ > 0;
   if (isBlank(cur_)) {
     reset();
     return false;
@@ -213,7 +226,7 @@ bool BlockReader::finishBlock(RawBlock& out) {
   out.lineCommentAt = std::string::npos;
   reset();
   if (!checkDialectLength(out)) return true;
-  normalize(out);
+  normalize(out, lexWork);
   // a line of only ignored characters (a stray ')', a byte order mark) is a blank line too
   return out.failed || !isBlank(out.lexText);
 }
@@ -249,7 +262,9 @@ bool BlockReader::keywordAt(const std::string& text, std::size_t i,
   return false;
 }
 
-void BlockReader::normalize(RawBlock& b) {
+// lexWork false: every byte is PlainText, which no state of the loop below changes or reports
+// (nor does it make the block less plain), so only the comment keyword is looked for.
+void BlockReader::normalize(RawBlock& b, bool lexWork) {
   b.lexText.assign(b.text);
   std::string& t = b.lexText;
   bool comment = false;     // inside a bracket comment
@@ -263,6 +278,7 @@ void BlockReader::normalize(RawBlock& b) {
       b.lineCommentAt = first;
     }
   }
+  if (!lexWork) return;
   for (std::size_t i = 0; i < t.size(); ++i) {
     const auto uc = static_cast<unsigned char>(t[i]);
     const LexClass k = lexClasses_[uc];

@@ -53,7 +53,7 @@ private:
   /// Appends to the block being read, up to the block length limit (then marks the overflow).
   void append(const char* bytes, std::size_t n);
   bool checkDialectLength(RawBlock& b);
-  void normalize(RawBlock& b);
+  void normalize(RawBlock& b, bool lexWork);
   void normalizeNonAscii(RawBlock& b, std::size_t& i, bool comment);
   bool keywordAt(const std::string& text, std::size_t i,
                  const std::vector<std::string>& words) const;
@@ -67,6 +67,10 @@ private:
   std::array<ByteClass, 256> classes_{};
   std::array<signed char, 128> asciiAlias_{}; // index into rules_.signAliases, or -1
   std::array<LexClass, 256> lexClasses_{};
+  // classes_ with kLexWork set where the byte is not PlainText: the cutting loop counts those,
+  // so a block without any skips normalize()'s pass over its bytes
+  static constexpr unsigned char kLexWork = 0x80;
+  std::array<unsigned char, 256> scanClasses_{};
 
   std::string buf_;
   std::size_t pos_ = 0;
@@ -90,6 +94,7 @@ private:
   bool inLineComment_ = false; // after a line-comment marker
   SourceLoc commentLoc_;
   bool overflow_ = false;
+  std::size_t curLexWork_ = 0; // bytes of cur_ normalize() may change (an upper bound)
 };
 
 } // namespace gcx::front

@@ -1,5 +1,10 @@
 #include "machine/block_words.h"
 
+#include <memory>
+#include <vector>
+
+#include "machine/reused_block_words.h"
+
 namespace gcx::machine {
 
 bool BlockWords::hasAxisWord() const {
@@ -16,8 +21,40 @@ const ir::Word* BlockWords::findPresentAction(GAction a) const {
   return nullptr;
 }
 
+namespace {
+struct WordsStack {
+  std::vector<std::unique_ptr<BlockWords>> slots; // never shrinks: a slot's address is kept
+  std::size_t depth = 0;
+};
+thread_local WordsStack wordsStack;
+
+BlockWords& takeWords() {
+  WordsStack& s = wordsStack;
+  if (s.depth == s.slots.size()) s.slots.push_back(std::make_unique<BlockWords>());
+  return *s.slots[s.depth++];
+}
+} // namespace
+
+ReusedBlockWords::ReusedBlockWords() : words_(takeWords()) {}
+ReusedBlockWords::~ReusedBlockWords() {
+  --wordsStack.depth;
+}
+
 const ir::Word* sortWords(const ir::Block& b, const Profile& profile, BlockWords& out) {
+  // a fresh BlockWords, but the lists keep their storage (out may be a ReusedBlockWords')
+  auto gWords = std::move(out.gWords);
+  auto gCodes = std::move(out.gCodes);
+  auto m = std::move(out.m);
+  auto other = std::move(out.other);
   out = BlockWords{};
+  gWords.clear();
+  gCodes.clear();
+  m.clear();
+  other.clear();
+  out.gWords = std::move(gWords);
+  out.gCodes = std::move(gCodes);
+  out.m = std::move(m);
+  out.other = std::move(other);
   for (const ir::Word& w : b.words) {
     if (w.kind != ir::ValueKind::Number && w.kind != ir::ValueKind::Path) return &w;
     if (w.address.size() != 1) {

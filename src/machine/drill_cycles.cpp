@@ -106,8 +106,8 @@ bool Interpreter::drillBlock(const BlockWords& w, bool consumedAxes) {
     req.radiusCompensation = state_.radiusComp != GAction::RadiusCompOff;
     req.drillScale = std::fabs(m(n, n));
     if (std::fabs(inPlane.determinant()) > 1e-12) req.shiftMap = inPlane.inverse();
-    motion::Frame hole{blockRange_.begin, fmt::format("{} hole {}", req.label, i)};
-    if (*holes > 1) from_.chain.push_back(hole);
+    if (*holes > 1) // a frame of its own only among repetitions: no text to format for one hole
+      from_.chain.push_back({blockRange_.begin, fmt::format("{} hole {}", req.label, i)});
     const auto res = cycles::expandHole(req, blockRange_, config, diags_);
     const bool ok = res && runCycleOps(res->ops, i == 1 ? res->auxAt : kNoAux, w, slot);
     if (*holes > 1) from_.chain.pop_back();

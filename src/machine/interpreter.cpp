@@ -1,6 +1,7 @@
 #include "machine/interpreter.h"
 #include "machine/cycle_state.h"
 #include "machine/helix.h"
+#include "machine/reused_block_words.h"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -19,6 +20,13 @@ using motion::Kind;
 using motion::Plane;
 
 namespace {
+
+// to = from, without the vector assignment's work when both chains are empty (a streamed
+// program's every block and event)
+void setProvenance(motion::Provenance& to, const motion::Provenance& from) {
+  to.at = from.at;
+  if (!to.chain.empty() || !from.chain.empty()) to.chain = from.chain;
+}
 
 /// The i-th of consecutive settings (X Y Z, or U V W).
 Setting nth(Setting first, int i) {
@@ -124,6 +132,7 @@ std::string Interpreter::workOffsetKey(int offset) const {
 }
 
 Vec3 Interpreter::currentWorkOffset() const {
+  if (setup_.workOffsets.empty()) return Vec3::Zero(); // asked per move: no key to build
   const auto o = setup_.workOffset(workOffsetKey(state_.workOffset));
   return Vec3(o[0], o[1], o[2]);
 }
@@ -156,7 +165,7 @@ void Interpreter::reexpress() {
 
 void Interpreter::emit(motion::Event e) {
   if (stopped_) return;
-  e.from = from_;
+  setProvenance(e.from, from_);
   if ((e.kind == Kind::Rapid || e.kind == Kind::Feed || e.kind == Kind::Arc) && !admitMotion(e)) {
     stopped_ = true;
     return;
@@ -252,7 +261,7 @@ void Interpreter::emitLine(Kind kind, const Vec3& to, const motion::Extra& extra
 
 bool Interpreter::execute(const ir::Block& block, const motion::Provenance& from) {
   if (ended_ || stopped_) return false;
-  from_ = from;
+  setProvenance(from_, from);
   blockRange_ = block.range;
   blockMoves_ = 0;
   ++blockSerial_;
@@ -274,7 +283,8 @@ bool Interpreter::executeBlock(const ir::Block& block) {
         return levelCycleBlock(block, g, *spec);
   if (const auto repeated = levelCycleRepeat(block)) return *repeated;
   if (const auto polar = polePolarBlock(block)) return *polar;
-  BlockWords w;
+  ReusedBlockWords reused;
+  BlockWords& w = reused.words();
   if (const ir::Word* bad = sortWords(block, profile_, w))
     return fail(diag::code::ExpressionNotExpanded, bad->range,
                 fmt::format("the value of {} is an expression; expressions are evaluated by the "
@@ -313,7 +323,7 @@ bool Interpreter::executeBlock(const ir::Block& block) {
     state_.surfaceSpeedValue = state_.spindleSpeed * 2 * M_PI *
                                std::fabs(program_[profile_.machine.surfaceSpeedAxis]) / 1000.0;
   if (!radiusCompensation(w, before)) return false;
-  if (w.hasAxisWord() && !w.has(GAction::DataInput)) {
+  if (!rotations_.empty() && w.hasAxisWord() && !w.has(GAction::DataInput)) { // none: no key
     const std::string key = workOffsetKey(state_.workOffset);
     for (int plane = 1; plane <= 3; ++plane)
       if (workRotation(key, plane) != 0)

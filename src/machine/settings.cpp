@@ -1,12 +1,20 @@
 #include "machine/settings.h"
 
+#include <array>
+
 namespace gcx::machine {
 
-double setting(const Profile& profile, const Setup& setup, Setting which, double absent) {
-  const SettingSpec* s = profile.machine.setting(which);
+namespace {
+double valueOf(const SettingSpec* s, const Setup& setup, double absent) {
   if (!s) return absent;
+  if (setup.parameters.empty()) return s->fallback; // the usual case: no key strings to build
   const double fallback = s->alias ? setup.parameter(s->alias, s->fallback) : s->fallback;
   return setup.parameter(s->key, fallback);
+}
+} // namespace
+
+double setting(const Profile& profile, const Setup& setup, Setting which, double absent) {
+  return valueOf(profile.machine.setting(which), setup, absent);
 }
 
 const char* settingLabel(const Profile& profile, Setting which) {
@@ -27,7 +35,14 @@ const GCodeSpec* codeOf(const Profile& profile, GAction action) {
 
 cycles::DrillConfig drillConfig(const Profile& profile, const Setup& setup) {
   const cycles::DrillConfig d;
-  auto value = [&](Setting s, double fallback) { return setting(profile, setup, s, fallback); };
+  // asked for every drilled block: one walk over the dialect's settings finds all fourteen (the
+  // first row of each, as MachineRules::setting answers)
+  std::array<const SettingSpec*, 256> spec{};
+  for (const SettingSpec& s : profile.machine.settings)
+    if (!spec[static_cast<unsigned char>(s.setting)])
+      spec[static_cast<unsigned char>(s.setting)] = &s;
+  auto specOf = [&](Setting s) { return spec[static_cast<unsigned char>(s)]; };
+  auto value = [&](Setting s, double fallback) { return valueOf(specOf(s), setup, fallback); };
   auto on = [&](Setting s, bool fallback) { return value(s, fallback ? 1 : 0) != 0; };
   cycles::DrillConfig c;
   c.returnG73 = value(Setting::PeckReturn, d.returnG73);
@@ -44,8 +59,9 @@ cycles::DrillConfig drillConfig(const Profile& profile, const Setup& setup) {
   c.orient = on(Setting::SpindleOrientable, d.orient);
   c.indexable = on(Setting::SpindleIndexable, d.indexable);
   c.closeLoopMCode = static_cast<int>(value(Setting::CloseLoopMCode, d.closeLoopMCode));
-  c.orientLabel = settingLabel(profile, Setting::SpindleOrientable);
-  c.indexLabel = settingLabel(profile, Setting::SpindleIndexable);
+  auto label = [&](Setting s) { return specOf(s) ? specOf(s)->label : ""; };
+  c.orientLabel = label(Setting::SpindleOrientable);
+  c.indexLabel = label(Setting::SpindleIndexable);
   return c;
 }
 

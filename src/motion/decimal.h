@@ -12,5 +12,7 @@ void appendDecimal(std::string& out, double v, int decimals = 6);
 /// prove the result equal (tests compare the two).
 void appendDecimalExact(std::string& out, double v, int decimals = 6);
 std::string formatDecimal(double v, int decimals = 6);
+/// A word of a program line: a blank, the letter, then appendDecimal's text, in one append.
+void appendWord(std::string& out, char letter, double v, int decimals = 6);
 
 } // namespace gcx::motion

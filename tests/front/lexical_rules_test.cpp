@@ -16,6 +16,7 @@ using V = std::vector<std::string>;
 struct Cut {
   V lexTexts; // one per block
   std::vector<std::size_t> lineCommentAt;
+  std::vector<bool> plain;
   V diagnostics; // "line:col CODE"
 };
 
@@ -29,6 +30,7 @@ Cut cut(const std::string& text, const front::LexicalRules& rules) {
   while (reader.next(b)) {
     c.lexTexts.push_back(b.lexText);
     c.lineCommentAt.push_back(b.lineCommentAt);
+    c.plain.push_back(b.plain);
   }
   for (const diag::Diagnostic& d : diags.all())
     c.diagnostics.push_back(fmt::format("{}:{} {}", d.range.begin.line, d.range.begin.col, d.code));
@@ -41,6 +43,18 @@ TEST(LexicalRules, NctCommentsSpanLinesAndLettersFold) {
   const Cut c = cut("g1 x!1 (a\nb) y2\nm30\n", nct::lexicalRules());
   EXPECT_EQ(c.lexTexts, (V{"G1 X-1 (a\nb) Y2", "M30"}));
   EXPECT_EQ(c.diagnostics, V{"1:5 GCXW01"});
+}
+
+TEST(LexicalRules, BlocksOfOnlyPlainBytesAndBlocksThatNeedWorkAreToldApart) {
+  // the cutter counts the bytes normalize must look at: a block without any is taken as is,
+  // a single lower-case letter, CR inside the block or comment keyword still gets its rule
+  front::LexicalRules r = nct::lexicalRules();
+  r.commentLineKeywords = {"REM"};
+  const Cut c = cut("G1 X1\r\nG1 x1\r\nG1\rX1\nREM X1\nG1 (A) X1\n", r);
+  EXPECT_EQ(c.lexTexts, (V{"G1 X1", "G1 X1", "G1 X1", "REM X1", "G1 (A) X1"}));
+  EXPECT_EQ(c.plain, (std::vector<bool>{true, true, true, true, true}));
+  EXPECT_EQ(c.lineCommentAt, (std::vector<std::size_t>{npos, npos, npos, 0, npos}));
+  EXPECT_EQ(c.diagnostics, V{"3:3 GCXW04"});
 }
 
 TEST(LexicalRules, WithoutBracketCommentsAParenthesisIsText) {

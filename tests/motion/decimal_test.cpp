@@ -69,5 +69,24 @@ TEST(Decimal, FastPathEqualsToCharsOnGridValues) {
   }
 }
 
+TEST(Decimal, WordIsBlankLetterAndTheNumbersText) {
+  auto word = [](char letter, double v, int d) {
+    std::string s = "G1";
+    appendWord(s, letter, v, d);
+    return s;
+  };
+  EXPECT_EQ(word('X', -1.5, 6), "G1 X-1.5");
+  EXPECT_EQ(word('Y', 0.0000004, 6), "G1 Y0");
+  EXPECT_EQ(word('Z', 99.25, 3), "G1 Z99.25");
+  EXPECT_EQ(word('F', 1e13, 6), "G1 F10000000000000"); // beyond the integer path
+  EXPECT_EQ(word('X', std::nan(""), 6), "G1 Xnull");
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> value(-1000.0, 1000.0);
+  for (int i = 0; i < 20000; ++i) {
+    const double v = value(rng);
+    ASSERT_EQ(word('X', v, 6), "G1 X" + fast(v, 6)) << v;
+  }
+}
+
 } // namespace
 } // namespace gcx::motion
