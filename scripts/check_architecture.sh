@@ -54,7 +54,7 @@ layering() {
         echo "$rel: src/machine includes $inc (passes/ lie above the machine)" >&2
         status=1
       fi
-      [ "$from" != "$to" ] && echo "$from $to"
+      if [ "$from" != "$to" ]; then echo "$from $to"; fi
     done < <(sed -n 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*"\([^"]*\)".*/\1/p' "$file")
   done < <(find "$root/src" "$root/passes" "$root/dialects" -type f \( -name '*.h' -o -name '*.cpp' \) 2>/dev/null | sort) | sort -u >"$edges"
   if [ -n "$allowed" ]; then

@@ -82,6 +82,12 @@ const char* funcText(ir::Func f) {
   }
 }
 
+// 2: ** * / MOD, evaluated first; 1: every other binary operator (wl4.md §6.3)
+int level(ir::Op op) {
+  return op == ir::Op::Pow || op == ir::Op::Mul || op == ir::Op::Div || op == ir::Op::FloorMod ? 2
+                                                                                               : 1;
+}
+
 // A word's value: number | #n [= factor] | #(e) | (e), each with an optional sign (§1.5)
 bool simpleValue(const ir::Expr& e) {
   const ir::Expr* x = &e;
@@ -108,11 +114,21 @@ std::string printExpr(const ir::Expr& e) {
     return "#(" + printExpr(e.args[0]) + ")";
   case ir::ExprKind::Bracket:
     return "(" + printExpr(e.args[0]) + ")";
-  case ir::ExprKind::Unary:
-    return std::string(opText(e.op) ? opText(e.op) : "-") + printExpr(e.args[0]);
+  case ir::ExprKind::Unary: // a sign binds to the primary after it
+    return std::string(opText(e.op) ? opText(e.op) : "-") + (e.args[0].kind == ir::ExprKind::Binary
+                                                                 ? "(" + printExpr(e.args[0]) + ")"
+                                                                 : printExpr(e.args[0]));
   case ir::ExprKind::Binary: {
+    // two levels, each left to right (§6.3): a right operand of the same level, or an operand of
+    // the looser level under the tighter one, is parenthesised (a parsed program keeps its own
+    // parentheses as Bracket nodes, so it prints as written)
     const char* op = opText(e.op);
-    return printExpr(e.args[0]) + (op ? op : "?") + printExpr(e.args[1]);
+    const auto operand = [&](const ir::Expr& a, bool right) {
+      const bool apart = a.kind == ir::ExprKind::Binary &&
+                         (level(a.op) < level(e.op) || (right && level(a.op) == level(e.op)));
+      return apart ? "(" + printExpr(a) + ")" : printExpr(a);
+    };
+    return operand(e.args[0], false) + (op ? op : "?") + operand(e.args[1], true);
   }
   case ir::ExprKind::Call: {
     const char* f = funcText(e.func);

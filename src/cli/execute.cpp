@@ -165,8 +165,8 @@ namespace {
 // Programs with macro statements, variables or calls run through the expansion pass, which
 // loads them whole; everything else streams block by block.
 bool expandProgram(Session& s, const CommonOptions& opt, const machine::Setup& setup,
-                   motion::Sink& out, std::ostream& printOut, Frame frame,
-                   motion::Sink* machineOut) {
+                   motion::Sink& out, std::ostream& printOut, Frame frame, motion::Sink* machineOut,
+                   std::function<void(const motion::Provenance&)> onBlock) {
   macro::ProgramLibrary library(s.dialect(), s.sources(), s.diags(), opt.libraryDirs);
   const macro::LoadedProgram* main = library.load(s.path());
   if (!main) return false;
@@ -176,6 +176,7 @@ bool expandProgram(Session& s, const CommonOptions& opt, const machine::Setup& s
   framed.bind(interp);
   limitMachine(interp, opt, programSize(s));
   interp.setKeepCompensation(opt.keepCompensation);
+  interp.setBlockObserver(std::move(onBlock));
   macro::Expander expander(library, interp, s.diags(), expansionLimits(opt));
   expander.setPrintOutput(&printOut);
   if (opt.fanucVacantOrder) expander.setVacantOrder(macro::VacantOrder::Fanuc);
@@ -187,9 +188,10 @@ bool expandProgram(Session& s, const CommonOptions& opt, const machine::Setup& s
 
 bool executeProgram(Session& s, const CommonOptions& opt, const machine::Setup& setup,
                     motion::Sink& out, std::ostream& printOut, Frame frame,
-                    motion::Sink* machineOut) {
+                    motion::Sink* machineOut,
+                    std::function<void(const motion::Provenance&)> onBlock) {
   if (macro::mayNeedExpansion(s.path(), s.dialect().profile()))
-    return expandProgram(s, opt, setup, out, printOut, frame, machineOut);
+    return expandProgram(s, opt, setup, out, printOut, frame, machineOut, std::move(onBlock));
   check::StaticChecker checker(s.dialect().profile(), s.diags());
   FramedSink framed(out, frame, machineOut);
   motion::Sink& sink = framed.sink();
@@ -197,6 +199,7 @@ bool executeProgram(Session& s, const CommonOptions& opt, const machine::Setup& 
   framed.bind(interp);
   limitMachine(interp, opt, programSize(s));
   interp.setKeepCompensation(opt.keepCompensation);
+  interp.setBlockObserver(std::move(onBlock));
   runBlocks(StreamStages{s.source(), checker, interp, s.diags()}, opt.jobs);
   if (s.diags().hasErrors()) return false;
   if (!interp.ended()) {

@@ -1,5 +1,6 @@
 // Runs a program through the interpreter into a motion sink: what expand, run and plot share.
 #pragma once
+#include <functional>
 #include <optional>
 
 #include "cli/output_file.h"
@@ -33,9 +34,11 @@ Frame frameNamed(const std::string& name);
 /// program ran without error.
 /// Programs with macro statements or calls go through the expansion pass (loaded whole);
 /// DPRNT output goes to printOut.
+/// `onBlock` is told each block's provenance before it runs (machine::Interpreter).
 bool executeProgram(Session& s, const CommonOptions& opt, const machine::Setup& setup,
                     motion::Sink& sink, std::ostream& printOut, Frame frame = Frame::Machine,
-                    motion::Sink* machineSink = nullptr);
+                    motion::Sink* machineSink = nullptr,
+                    std::function<void(const motion::Provenance&)> onBlock = {});
 
 /// The work origin (machine frame) a program starts with under this setup: the initial work
 /// offset plus the common shift.

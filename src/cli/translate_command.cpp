@@ -14,6 +14,7 @@
 #include "cli/translate_batch.h"
 #include "cli/translate_flat.h"
 #include "cli/translate_ngc.h"
+#include "cli/translate_structured.h"
 #include "cli/translate_target.h"
 #include "diag/diagnostic.h"
 #include "dialect/dialect.h"
@@ -66,6 +67,77 @@ bool verified(const std::string& source, const fs::path& result, bool resultRead
   return false;
 }
 
+// The note of a translation written, and that it was proven.
+void reportWritten(const std::string& input, const std::string& note, const TranslateOptions& opt) {
+  if (!note.empty()) std::cerr << "gcx: note: " << input << ": " << note << '\n';
+  if (opt.verify)
+    std::cerr << fmt::format("gcx: {} -> {}: verified, moves the tool like the source within {} "
+                             "mm\n",
+                             input, opt.output.empty() ? "standard output" : opt.output,
+                             opt.tolerance);
+}
+
+struct StructuredOutcome {
+  int rc = -1;        // the exit code when the structured translation decided it; -1: fall back
+  std::string unkept; // why the structure was not kept, when the program has one
+};
+
+// The structured translation to another dialect (cli/translate_structured.h): staged in a folder
+// beside the output, proven, then moved into place file by file.
+StructuredOutcome translateStructured(const Dialect& source, const TranslateTarget& target,
+                                      const std::string& input, const TranslateOptions& opt) {
+  StructuredOutcome o;
+  const fs::path out(opt.output);
+  const fs::path folder = opt.output.empty()      ? fs::temp_directory_path()
+                          : out.has_parent_path() ? out.parent_path()
+                                                  : fs::path(".");
+  const fs::path stage = folder / fmt::format(".gcx-translate-{}.d", getpid());
+  struct DiscardFolder {
+    fs::path path;
+    ~DiscardFolder() {
+      std::error_code ec;
+      fs::remove_all(path, ec);
+    }
+  } discard{stage};
+  const std::string mainName = ".gcx-main" + target.extension;
+  StructuredAttempt st = writeStructuredDialect(source, target, input, stage, mainName, opt);
+  if (!st.tried) return o;
+  if (st.written && opt.output.empty() && st.staged.size() > 1) {
+    st.written = false;
+    st.unkept = "its subprograms go to files of their own beside the output: give -o";
+  }
+  std::ostringstream proof;
+  if (st.written && opt.verify && !verified(input, st.staged.front(), true, opt, proof)) {
+    st.written = false;
+    st.unkept = "the program with its structure kept did not move the tool like the source" +
+                divergence(proof.str());
+  }
+  if (!st.written) {
+    o.unkept = st.unkept;
+    return o;
+  }
+  if (opt.output.empty()) {
+    o.rc = copyToStdout(st.staged.front()) ? Ok : UsageError;
+  } else {
+    for (std::size_t i = 0; i < st.staged.size(); ++i) {
+      const fs::path to = i == 0 ? out : folder / st.names[i];
+      std::error_code ec;
+      fs::rename(st.staged[i], to, ec);
+      if (ec) {
+        diag::reportUsage(fmt::format("cannot write {}: {}", to.string(), ec.message()));
+        o.rc = UsageError;
+        return o;
+      }
+    }
+    o.rc = Ok;
+  }
+  std::string files;
+  for (std::size_t i = 1; i < st.names.size(); ++i)
+    files += (files.empty() ? "; subprograms written as " : ", ") + st.names[i];
+  reportWritten(input, st.note + files, opt);
+  return o;
+}
+
 } // namespace
 
 int runTranslate(const std::string& input, const TranslateOptions& opt) {
@@ -109,14 +181,28 @@ int runTranslate(const std::string& input, const TranslateOptions& opt) {
     kept = ngc.written && (!opt.verify || verified(input, staged, true, opt, proof));
     note = ngcNote(ngc, kept, target->note, proof.str());
   }
+  // another dialect: the program's structure in the target's own forms, proven; else the flat
+  // motion below, with why in its note
+  std::string structureNote;
+  if (target->motionWriter && !expandSet->subprograms && !expandSet->loops &&
+      !expandSet->variables) {
+    const StructuredOutcome st = translateStructured(*source, *target, input, opt);
+    if (st.rc >= 0) return st.rc;
+    structureNote = st.unkept;
+  }
+  const auto withStructureNote = [&](FlatAttempt& a) {
+    if (!structureNote.empty()) a.note = "structure not kept: " + structureNote + "; " + a.note;
+  };
   if (target->motionWriter) {
     // cycles kept where the target has them, proven; else everything run out, proven
     FlatAttempt attempt = planFlatMotion(input, *target, opt, target->keepCycles);
+    withStructureNote(attempt);
     if (const int rc = writeFlatMotion(input, *target, opt, staged.string(), attempt)) return rc;
     std::ostringstream proof;
     bool proven = !opt.verify || verified(input, staged, false, opt, proof);
     if (!proven && attempt.keepCycles) { // again with every cycle run out, the note says why
       attempt = planFlatMotion(input, *target, opt, false, divergence(proof.str()));
+      withStructureNote(attempt);
       if (const int rc = writeFlatMotion(input, *target, opt, staged.string(), attempt)) return rc;
       proven = verified(input, staged, false, opt);
     } else if (!proven) {
@@ -144,12 +230,7 @@ int runTranslate(const std::string& input, const TranslateOptions& opt) {
       return UsageError;
     }
   }
-  if (!note.empty()) std::cerr << "gcx: note: " << input << ": " << note << '\n';
-  if (opt.verify)
-    std::cerr << fmt::format("gcx: {} -> {}: verified, moves the tool like the source within {} "
-                             "mm\n",
-                             input, opt.output.empty() ? "standard output" : opt.output,
-                             opt.tolerance);
+  reportWritten(input, note, opt);
   return Ok;
 }
 

@@ -261,6 +261,7 @@ void Interpreter::emitLine(Kind kind, const Vec3& to, const motion::Extra& extra
 
 bool Interpreter::execute(const ir::Block& block, const motion::Provenance& from) {
   if (ended_ || stopped_) return false;
+  if (blockObserver_) blockObserver_(from);
   setProvenance(from_, from);
   blockRange_ = block.range;
   blockMoves_ = 0;

@@ -126,6 +126,11 @@ public:
   void setStopCheck(std::function<std::optional<std::string>()> check) {
     stopCheck_ = std::move(check);
   }
+  /// Told each block's provenance before the block runs: a consumer learns which run of which
+  /// block each event belongs to (a structured translation, docs/translation.md).
+  void setBlockObserver(std::function<void(const motion::Provenance&)> observer) {
+    blockObserver_ = std::move(observer);
+  }
   /// Where G70.7-G73.7 find their contour blocks; without one they are an error.
   void setContourSource(ContourSource source) { contours_ = std::move(source); }
   /// After G71.7-G73.7: the N of the last contour block. When the contour follows the cycle
@@ -418,6 +423,7 @@ private:
   std::uint64_t moves_ = 0, maxMoves_ = UINT64_MAX; // moves beyond the first of each block
   std::uint64_t blockMoves_ = 0;                    // moves of the block being executed
   std::function<std::optional<std::string>()> stopCheck_;
+  std::function<void(const motion::Provenance&)> blockObserver_;
   bool dataMode_ = false;
 };
 

@@ -156,51 +156,46 @@ TEST_F(TranslateCycles, Wl4Spec_5_2_Fms3000ExitAboveUBecomesG80AndARapid) {
             "gcx: B.fms -> B.wl4: verified, moves the tool like the source within 0.001 mm\n");
 }
 
-// WL4 G81 with #2 #3: each move calls %81, which stays at #2: NCT G99 G81 R Z, then X Y.
+// WL4 G81 with #2 #3: each move calls %81, which stays at #2: NCT G99 G81 R Z, then X Y. The
+// program has variables, so it is written with its structure in the program's frame: #2 and #3
+// stay (NCT's own variables now, read by nothing), the holes are the cycle's blocks.
 TEST_F(TranslateCycles, CyclesSpec_2_3_Wl4CallsOfPercent81BecomeG99G81) {
   write("C.wl4", kWl4Holes);
   const CliResult r = gcx("translate C.wl4 --to nct -o C.nct");
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(read("C.nct"), "O1\n"
                            "(translated from C.wl4 [wl4] by gcx)\n"
-                           "(kept as nct cycles: drilling [C.wl4:4, 5]; run out into)\n"
-                           "(motion: variables [C.wl4:3]; machine frame, offsets and tool)\n"
-                           "(lengths in the coordinates, run without a setup)\n"
-                           "G90 G94 G17 G21\n"
-                           "G0 X0 Y0 Z50\n"
+                           "G90 G0 X0 Y0 Z50\n"
+                           "#2=2\n"
+                           "#3=-10\n"
                            "G99 G81 X10 Y10 R2 Z-10 F100\n"
                            "X20 Y10\n"
                            "G80\n"
-                           "G0 X20 Y10 Z50\n"
+                           "G0 Z50\n"
                            "M30\n");
-  EXPECT_EQ(
-      r.err,
-      "gcx: note: C.wl4: kept as nct cycles: drilling (C.wl4:4, 5); run out into motion: variables "
-      "(C.wl4:3); machine frame, offsets and tool lengths in the coordinates, run without a setup\n"
-      "gcx: C.wl4 -> C.nct: verified, moves the tool like the source within 0.001 mm\n");
+  EXPECT_EQ(r.err, "gcx: note: C.wl4: kept as nct structure: variables (C.wl4:3), drilling "
+                   "(C.wl4:4, 5); program frame: runs on the same setup as its source\n"
+                   "gcx: C.wl4 -> C.nct: verified, moves the tool like the source within 0.001 "
+                   "mm\n");
 }
 
-// The same WL4 program to FMS-3000: G81 U Z, the second hole remembering them.
+// The same WL4 program to FMS-3000: G81 U Z, the second hole remembering them; #2 and #3 were
+// read only by %81, and FMS-3000 has no variables: they go.
 TEST_F(TranslateCycles, Fms3000Spec_5_1_Wl4CallsOfPercent81BecomeG81U) {
   write("C.wl4", kWl4Holes);
   const CliResult r = gcx("translate C.wl4 --to fms3000 -o C.fms");
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(read("C.fms"), "rem translated from C.wl4 (wl4) by gcx\r\n"
-                           "rem kept as fms3000 cycles: drilling (C.wl4:4, 5); run out into\r\n"
-                           "rem motion: variables (C.wl4:3); machine frame, offsets and tool\r\n"
-                           "rem lengths in the coordinates, run without a setup\r\n"
-                           "G90 G94 G17\r\n"
-                           "G00 X0 Y0 Z50\r\n"
+                           "G90 G00 X0 Y0 Z50\r\n"
                            "G00 X10 Y10 G81 U2 Z-10 F100\r\n"
                            "G00 X20 Y10 G81\r\n"
                            "G80\r\n"
-                           "G00 X20 Y10 Z50\r\n"
+                           "G00 Z50\r\n"
                            "M30\r\n");
-  EXPECT_EQ(r.err,
-            "gcx: note: C.wl4: kept as fms3000 cycles: drilling (C.wl4:4, 5); run out into motion: "
-            "variables (C.wl4:3); machine frame, offsets and tool lengths in the coordinates, run "
-            "without a setup\n"
-            "gcx: C.wl4 -> C.fms: verified, moves the tool like the source within 0.001 mm\n");
+  EXPECT_EQ(r.err, "gcx: note: C.wl4: kept as fms3000 structure: drilling (C.wl4:4, 5); "
+                   "program frame: runs on the same setup as its source\n"
+                   "gcx: C.wl4 -> C.fms: verified, moves the tool like the source within 0.001 "
+                   "mm\n");
 }
 
 // NCT G83 Q4 (clearance 1 mm, the setting): FMS-3000 G83 V4 W1, the G98 return as I.

@@ -1,0 +1,35 @@
+// gcx translate --to <another dialect>, keeping the program's structure: its subprograms, loops,
+// jumps and variables written in the target's own forms, block by block in the program's frame
+// (translate/structured_writer.h), the subprograms in the target's files. The result runs on the
+// same setup as its source and is proven like every translation; what the target cannot keep
+// with the same meaning leaves the translation to the flat motion, with the reason in its note.
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cli/commands.h"
+#include "cli/translate_target.h"
+#include "dialect/dialect.h"
+
+namespace gcx::cli {
+
+struct StructuredAttempt {
+  bool tried = false;   // the program has subprograms, loops or variables
+  bool written = false; // every file is in the staging folder
+  /// The files written, the main program first: paths in the staging folder and the names they
+  /// take beside the output.
+  std::vector<std::filesystem::path> staged;
+  std::vector<std::string> names;
+  std::string note;   // what it keeps, each with its source blocks
+  std::string unkept; // why not: "A.nct:12: G81: why"
+};
+
+/// Writes `input` for `target` into `stage` (the main program as `mainName`) when the program has
+/// structures that the flat motion would run out.
+StructuredAttempt writeStructuredDialect(const Dialect& source, const TranslateTarget& target,
+                                         const std::string& input,
+                                         const std::filesystem::path& stage,
+                                         const std::string& mainName, const TranslateOptions& opt);
+
+} // namespace gcx::cli
