@@ -17,22 +17,6 @@ using xlate::BlockOut;
 using xlate::Hole;
 using xlate::HoleKind;
 
-cycles::DrillCycle drillCycle(HoleKind k) {
-  switch (k) {
-  case HoleKind::Drill:
-    return cycles::DrillCycle::Drill;
-  case HoleKind::DrillDwell:
-    return cycles::DrillCycle::DrillDwell;
-  case HoleKind::BoreFeedOut:
-    return cycles::DrillCycle::BoreFeedOut;
-  case HoleKind::Peck:
-    return cycles::DrillCycle::PeckDrill;
-  case HoleKind::ChipBreak:
-    return cycles::DrillCycle::HighSpeedPeck;
-  }
-  return cycles::DrillCycle::Drill;
-}
-
 class HoleWriter : public xlate::HoleLowering {
 public:
   std::optional<std::string> refuse(const Hole& h, const BlockOut& out) const override {
@@ -57,7 +41,7 @@ public:
     if (fresh || next.toR != run_->toR)
       code(out, next.toR ? GAction::ReturnR : GAction::ReturnInitial);
     if (fresh || next.kind != run_->kind)
-      code(out, GAction::DrillCycle, static_cast<int>(drillCycle(h.kind)));
+      code(out, GAction::DrillCycle, static_cast<int>(xlate::drillCycleOf(h.kind)));
     out.writeValue("X", h.x);
     out.writeValue("Y", h.y);
     auto changed = [&](double now, double before) {

@@ -9,6 +9,7 @@
 
 #include "dialects/nct/arguments.h"
 #include "dialects/ngc/expression.h"
+#include "dialects/ngc/printer.h"
 #include "emit/number.h"
 
 namespace gcx::ngc {
@@ -56,20 +57,6 @@ bool keptM(double m) {
 bool isAxis(const ir::Word& w) {
   return w.address.size() == 1 &&
          std::string_view("XYZABC").find(w.address[0]) != std::string::npos;
-}
-
-// LinuxCNC reads (MSG, ...), (DEBUG, ...) and the like as commands: a source comment that starts
-// so stays a comment.
-std::string commentText(const std::string& text) {
-  std::string t;
-  for (char c : text)
-    if (c != '(' && c != ')') t += c;
-  std::string lower;
-  for (char c : t)
-    if (c != ' ') lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  for (const char* command : {"msg,", "debug,", "print,", "log", "probe", "abort,"})
-    if (lower.rfind(command, 0) == 0) return "(- " + t + ")";
-  return "(" + t + ")";
 }
 
 void forEachVariable(const ir::Expr& e, const std::function<void(int)>& f) {

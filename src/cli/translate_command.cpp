@@ -100,7 +100,8 @@ StructuredOutcome translateStructured(const Dialect& source, const TranslateTarg
     }
   } discard{stage};
   const std::string mainName = ".gcx-main" + target.extension;
-  StructuredAttempt st = writeStructuredDialect(source, target, input, stage, mainName, opt);
+  StructuredAttempt st = writeStructuredDialect(source, structuredTarget(*target.dialect), input,
+                                                stage, mainName, opt);
   if (!st.tried) return o;
   if (st.written && opt.output.empty() && st.staged.size() > 1) {
     st.written = false;

@@ -1,10 +1,15 @@
 #include "cli/translate_ngc.h"
 
+#include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
 #include <sstream>
+#include <unistd.h>
 
+#include "cli/translate_structured.h"
+#include "dialects/ngc/printer.h"
 #include "dialects/ngc/structured.h"
+#include "dialects/ngc/structured_spelling.h"
 #include "emit/number.h"
 #include "oracle/setup.h"
 #include "passes/macro/program_library.h"
@@ -12,6 +17,8 @@
 namespace gcx::cli {
 
 namespace {
+
+namespace fs = std::filesystem;
 
 // "G10 L2 P1 X.. Y.. Z..\n" for each work offset of the setup; false with why when the setup is
 // not one rs274 takes.
@@ -35,6 +42,34 @@ bool setupOffsets(const std::string& setupPath, std::string& out, std::string& w
   return true;
 }
 
+// FMS-3000 and WL4: the structured translation every dialect shares (cli/translate_structured.h)
+// with LinuxCNC's spelling; a program without structure to keep is written flat.
+NgcStructure writeNeutralNgc(const Dialect& source, const std::string& input,
+                             const std::string& file, const TranslateOptions& opt) {
+  NgcStructure result;
+  const fs::path out(file);
+  const fs::path stage = (out.has_parent_path() ? out.parent_path() : fs::path(".")) /
+                         fmt::format(".gcx-ngc-{}.d", getpid());
+  struct DiscardFolder {
+    fs::path path;
+    ~DiscardFolder() {
+      std::error_code ec;
+      fs::remove_all(path, ec);
+    }
+  } discard{stage};
+  const StructuredTarget target{&ngc::structuredSpelling(), &ngc::makeEmitter, "ngc", true};
+  StructuredAttempt st = writeStructuredDialect(source, target, input, stage, "main.ngc", opt);
+  if (!st.written) {
+    result.unkept = st.tried ? st.unkept : "the program has no structure to keep";
+    return result;
+  }
+  std::error_code ec;
+  fs::copy_file(st.staged.front(), out, fs::copy_options::overwrite_existing, ec);
+  result.written = !ec;
+  result.kept = std::move(st.kept);
+  return result;
+}
+
 } // namespace
 
 NgcStructure writeStructuredNgc(const Dialect& source, const std::string& input,
@@ -42,10 +77,7 @@ NgcStructure writeStructuredNgc(const Dialect& source, const std::string& input,
   const CommonOptions& common = opt.common;
   NgcStructure result;
   const ngc::StructuredWriter writer = ngc::structuredWriter(source);
-  if (!writer) {
-    result.unkept = fmt::format("gcx keeps no {} structure in ngc yet", source.name);
-    return result;
-  }
+  if (!writer) return writeNeutralNgc(source, input, file, opt);
   SourceManager sources;
   diag::Engine diags(common.maxErrors);
   macro::ProgramLibrary library(source, sources, diags, common.libraryDirs);

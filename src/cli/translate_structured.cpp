@@ -30,9 +30,10 @@ std::string located(const xlate::Unkept& u, SourceManager& sources, const std::s
                     : fmt::format("{}: {}: {}", file, u.what, u.why);
 }
 
-// "subprogram calls (A.nct:7, 9), loops (A.nct:3)"
-std::string keptList(const std::vector<xlate::KeptStructure>& kept, SourceManager& sources) {
-  std::string out;
+// "subprogram calls (A.nct:7, 9)", "loops (A.nct:3)"
+std::vector<std::string> keptList(const std::vector<xlate::KeptStructure>& kept,
+                                  SourceManager& sources) {
+  std::vector<std::string> out;
   for (const xlate::KeptStructure& k : kept) {
     std::string at;
     FileId file = static_cast<FileId>(-1);
@@ -44,7 +45,7 @@ std::string keptList(const std::vector<xlate::KeptStructure>& kept, SourceManage
       at += std::to_string(k.at[i].line);
     }
     if (k.at.size() > 6) at += fmt::format(" and {} more", k.at.size() - 6);
-    out += (out.empty() ? "" : ", ") + fmt::format("{} ({})", k.what, at);
+    out.push_back(fmt::format("{} ({})", k.what, at));
   }
   return out;
 }
@@ -97,11 +98,19 @@ private:
 
 } // namespace
 
-StructuredAttempt writeStructuredDialect(const Dialect& source, const TranslateTarget& target,
+StructuredTarget structuredTarget(const Dialect& target) {
+  StructuredTarget t;
+  t.spelling = xlate::structuredSpellingFor(target.name);
+  t.emitter = target.emitter;
+  t.name = target.name;
+  return t;
+}
+
+StructuredAttempt writeStructuredDialect(const Dialect& source, const StructuredTarget& target,
                                          const std::string& input, const fs::path& stage,
                                          const std::string& mainName, const TranslateOptions& opt) {
   StructuredAttempt a;
-  const xlate::StructuredSpelling* spelling = xlate::structuredSpellingFor(target.dialect->name);
+  const xlate::StructuredSpelling* spelling = target.spelling;
   if (!spelling) return a;
   SourceManager sources;
   diag::Engine diags(opt.common.maxErrors);
@@ -109,7 +118,7 @@ StructuredAttempt writeStructuredDialect(const Dialect& source, const TranslateT
   const macro::LoadedProgram* main = library.load(input);
   if (!main || diags.errorCount() > 0) return a; // the flat translation reports the errors
   for (const xlate::StructureAt& s : xlate::scanStructures(main->blocks, source.profile()))
-    a.tried = a.tried || s.kind != xlate::Structure::Cycle;
+    a.tried = a.tried || s.kind != xlate::Structure::Cycle || target.forCycles;
   if (!a.tried) return a;
   machine::Setup setup;
   if (!opt.setup.empty()) {
@@ -184,13 +193,17 @@ StructuredAttempt writeStructuredDialect(const Dialect& source, const TranslateT
     in.runs = [&](const SourceLoc& at) { return recorder.runsAt(placeKey(sources, at)); };
   }
   xlate::StructuredResult result;
-  if (!xlate::writeStructured(std::move(in), *spelling, target.dialect->emitter, result, why)) {
+  if (!xlate::writeStructured(std::move(in), *spelling, target.emitter, result, why)) {
     a.unkept = located(why, sources, input);
     return a;
   }
+  a.kept = keptList(result.kept, sources);
+  std::string list;
+  for (const std::string& k : a.kept)
+    list += (list.empty() ? "" : ", ") + k;
   a.note = fmt::format("kept as {} structure: {}; program frame: runs on the same setup as its "
                        "source",
-                       target.dialect->name, keptList(result.kept, sources));
+                       target.name, list);
   std::error_code ec;
   fs::create_directories(stage, ec);
   for (const xlate::WrittenFile& f : result.files) {

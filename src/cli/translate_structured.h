@@ -11,6 +11,7 @@
 #include "cli/commands.h"
 #include "cli/translate_target.h"
 #include "dialect/dialect.h"
+#include "translate/structured_writer.h"
 
 namespace gcx::cli {
 
@@ -21,13 +22,27 @@ struct StructuredAttempt {
   /// take beside the output.
   std::vector<std::filesystem::path> staged;
   std::vector<std::string> names;
-  std::string note;   // what it keeps, each with its source blocks
-  std::string unkept; // why not: "A.nct:12: G81: why"
+  std::vector<std::string> kept; // "subprogram calls (A.nct:7, 9)", ...
+  std::string note;              // what it keeps, each with its source blocks
+  std::string unkept;            // why not: "A.nct:12: G81: why"
 };
+
+/// Where a structured translation goes: the target's spelling, its printer and its name.
+struct StructuredTarget {
+  const xlate::StructuredSpelling* spelling = nullptr;
+  xlate::EmitterMaker emitter = nullptr;
+  std::string name; // "wl4", "ngc"
+  /// Cycles alone are reason enough to write the structured program (LinuxCNC, whose flat motion
+  /// keeps none); otherwise only subprograms, loops, jumps or variables are.
+  bool forCycles = false;
+};
+
+/// The structured target of a dialect, or none when gcx writes no structure in it.
+StructuredTarget structuredTarget(const Dialect& target);
 
 /// Writes `input` for `target` into `stage` (the main program as `mainName`) when the program has
 /// structures that the flat motion would run out.
-StructuredAttempt writeStructuredDialect(const Dialect& source, const TranslateTarget& target,
+StructuredAttempt writeStructuredDialect(const Dialect& source, const StructuredTarget& target,
                                          const std::string& input,
                                          const std::filesystem::path& stage,
                                          const std::string& mainName, const TranslateOptions& opt);

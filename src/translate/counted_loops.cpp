@@ -218,7 +218,52 @@ bool jumpLoop(UnitSteps& u, std::size_t i) {
   return false;
 }
 
+// The step holding `label`, or npos.
+std::size_t labelStep(const UnitSteps& u, const std::string& label) {
+  for (std::size_t i = 0; i < u.steps.size(); ++i)
+    if (u.steps[i].label == label) return i;
+  return static_cast<std::size_t>(-1);
+}
+
+// Whether a jump other than the one at `k` enters or leaves the steps [i, k].
+bool crossed(const UnitSteps& u, std::size_t i, std::size_t k) {
+  for (std::size_t j = 0; j < u.steps.size(); ++j)
+    for (const Flow& f : u.steps[j].after) {
+      if (f.kind != FlowKind::Jump || j == k) continue;
+      const std::size_t t = labelStep(u, f.label);
+      if ((j >= i && j <= k) != (t >= i && t <= k)) return true;
+    }
+  return false;
+}
+
 } // namespace
+
+int backwardJumpsAsDoLoops(UnitSteps& unit) {
+  int rewritten = 0;
+  for (std::size_t k = 0; k < unit.steps.size(); ++k) {
+    Step& s = unit.steps[k];
+    if (s.after.empty() || s.after.back().kind != FlowKind::Jump) continue;
+    Flow& jump = s.after.back();
+    // the condition: the jump's own (NCT IF [c] GOTO), or the guard of a block that only jumps
+    const bool guarded = s.guard && !s.hasNcPart() && s.after.size() == 1 && s.before.empty();
+    if (!jump.condition && !guarded) continue;
+    const std::size_t i = labelStep(unit, jump.label);
+    if (i > k || jumpedToElsewhere(unit, jump.label, k) || crossed(unit, i, k)) continue;
+    Flow end;
+    end.kind = FlowKind::DoEnd;
+    end.condition = jump.condition ? *jump.condition : *s.guard;
+    end.loop = 1000 + ++rewritten;
+    end.range = jump.range;
+    Flow start = end;
+    start.kind = FlowKind::DoStart;
+    start.condition.reset();
+    if (guarded) s.guard.reset();
+    jump = end;
+    unit.steps[i].label.clear();
+    unit.steps[i].before.insert(unit.steps[i].before.begin(), start);
+  }
+  return rewritten;
+}
 
 int countedLoopsAsRepeats(UnitSteps& unit) {
   int rewritten = 0;

@@ -11,4 +11,10 @@ namespace gcx::xlate {
 /// shape are left as they are (the writer then says why the target cannot keep them).
 int countedLoopsAsRepeats(UnitSteps& unit);
 
+/// Rewrites each jump back to a label, taken while a condition holds, as a do-while loop over the
+/// steps from the label to the jump (DoStart / DoEnd), for a target that has such loops but no
+/// jumps (LinuxCNC `o.. do` ... `o.. while`); returns how many. A jump that other jumps cross is
+/// left as it is.
+int backwardJumpsAsDoLoops(UnitSteps& unit);
+
 } // namespace gcx::xlate

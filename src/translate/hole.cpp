@@ -190,4 +190,20 @@ HoleMatch matchHole(std::span<const Event> events, bool complete, const Event* b
   return m;
 }
 
+cycles::DrillCycle drillCycleOf(HoleKind k) {
+  switch (k) {
+  case HoleKind::Drill:
+    return cycles::DrillCycle::Drill;
+  case HoleKind::DrillDwell:
+    return cycles::DrillCycle::DrillDwell;
+  case HoleKind::BoreFeedOut:
+    return cycles::DrillCycle::BoreFeedOut;
+  case HoleKind::Peck:
+    return cycles::DrillCycle::PeckDrill;
+  case HoleKind::ChipBreak:
+    return cycles::DrillCycle::HighSpeedPeck;
+  }
+  return cycles::DrillCycle::Drill;
+}
+
 } // namespace gcx::xlate

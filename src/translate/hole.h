@@ -9,6 +9,7 @@
 #include <span>
 #include <string_view>
 
+#include "cycles/drilling_state.h"
 #include "motion/event.h"
 
 namespace gcx::xlate {
@@ -23,6 +24,10 @@ enum class HoleKind : unsigned char {
 
 /// "drilling", "drilling with dwell", "boring with feed out", "peck drilling", ...
 std::string_view holeKindName(HoleKind k);
+
+/// The drilling cycle of the cycles library that drills such a hole (NCT's and LinuxCNC's codes
+/// name their cycles by it).
+cycles::DrillCycle drillCycleOf(HoleKind k);
 
 struct Hole {
   HoleKind kind = HoleKind::Drill;

@@ -280,8 +280,8 @@ bool Lifter::block(const ir::Block& b, Step& s) {
                     "the dwell's block does not move on this control");
   // after the NC part: assignments as scanned, then calls and returns, then jumps (a call is
   // made after all other commands of its block, the jump after the return; wl4.md §1.9)
-  std::stable_sort(s.after.begin(), s.after.end(), [](const Flow& a, const Flow& b) {
-    return afterRank(a.kind) < afterRank(b.kind);
+  std::stable_sort(s.after.begin(), s.after.end(), [](const Flow& x, const Flow& y) {
+    return afterRank(x.kind) < afterRank(y.kind);
   });
   return !failed;
 }

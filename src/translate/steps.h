@@ -56,7 +56,9 @@ enum class FlowKind : unsigned char {
   RepeatEnd,   // this step is the last of the repeated ones
   WhileStart,  // while `condition` holds, the steps up to the WhileEnd of `loop` run
   WhileEnd,
-  Jump, // continue at `label` (when `condition` holds, if it is given)
+  Jump,    // continue at `label` (when `condition` holds, if it is given)
+  DoStart, // the steps up to DoEnd of `loop` run, again while DoEnd's `condition` holds
+  DoEnd,
 };
 
 struct Flow {

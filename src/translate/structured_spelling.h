@@ -32,6 +32,18 @@ struct StructuredSpelling {
   /// zero, and IF (c) guards the rest of a block (WL4).
   bool guardJumps = false;
   int maxLabels = 0; // per program unit (WL4: 127); 0: no limit
+  /// Loops are named uniquely in the file (LinuxCNC o-words), not by their nesting depth (NCT DOm).
+  bool uniqueLoopIds = false;
+  /// `do ... while [c]` loops, tested after each pass (LinuxCNC): a jump back to a label becomes
+  /// one where the target has no jumps.
+  bool doWhileLoops = false;
+  /// A call stands in a block of its own (LinuxCNC `o<n> call`).
+  bool callsAlone = false;
+  /// A unit returns at its closing line (LinuxCNC `endsub`): the source's last return is that.
+  bool returnAtEnd = false;
+  /// The called units come before the main program in their file (LinuxCNC finds a subroutine
+  /// defined before its call).
+  bool subprogramsFirst = false;
   /// Assignments stand in a block with its words, after them (WL4); else one to a block (NCT).
   bool statementsBesideWords = false;
   /// The highest repeat count one call writes (WL4 `L nnpp`: 99); more are a counted loop.

@@ -55,9 +55,10 @@ class UnitWriter {
 public:
   UnitWriter(const StructuredSpelling& t, const StructuredInput& in, const VariablePlan& plan,
              const std::map<std::string, std::string>& unitNames, std::vector<int>& counters,
-             KeptLog& kept, Unkept& why)
+             int& loopSerial, KeptLog& kept, Unkept& why)
       : t_(t), p_(*t.profile), source_(*in.source), in_(in), plan_(plan), unitNames_(unitNames),
-        counters_(counters), kept_(kept), why_(why), holes_(t.holes ? t.holes() : nullptr) {}
+        counters_(counters), kept_(kept), why_(why), holes_(t.holes ? t.holes() : nullptr),
+        loopSerial_(loopSerial) {}
 
   bool unit(const UnitSteps& u, std::vector<ir::Block>& out);
 
@@ -137,6 +138,8 @@ private:
     int id = 0;            // NCT DO number
   };
   std::vector<Loop> loops_;
+  int& loopSerial_;          // loops named in the file so far (StructuredSpelling::uniqueLoopIds)
+  bool lastContent_ = false; // the step is the unit's last that does something
 };
 
 ir::Block& UnitWriter::open(const SourceRange& at) {
@@ -451,8 +454,14 @@ bool UnitWriter::unit(const UnitSteps& u, std::vector<ir::Block>& out) {
       if (f.kind == FlowKind::Jump) labelNumbers_.insert(std::stol(f.label));
   }
   nextFresh_ = 9000;
-  for (const Step& s : u.steps)
-    if (!step(s)) return false;
+  std::size_t lastContent = 0;
+  for (std::size_t i = 0; i < u.steps.size(); ++i)
+    if (u.steps[i].hasNcPart() || !u.steps[i].before.empty() || !u.steps[i].after.empty())
+      lastContent = i;
+  for (std::size_t i = 0; i < u.steps.size(); ++i) {
+    lastContent_ = i == lastContent;
+    if (!step(u.steps[i])) return false;
+  }
   if (!loops_.empty()) return fail(u.steps.back().range, "a loop", "it is not closed");
   endCycle(u.steps.empty() ? SourceRange{} : u.steps.back().range);
   if (t_.maxLabels && labelCount_ > t_.maxLabels)
@@ -755,7 +764,7 @@ bool UnitWriter::loopHead(const std::optional<ir::Expr>& condition, const Source
       return fail(
           at, "a loop",
           fmt::format("{} nests WHILE loops {} deep at most", t_.label, t_.maxWhileNesting));
-    l.id = static_cast<int>(loops_.size()) + 1;
+    l.id = t_.uniqueLoopIds ? ++loopSerial_ : static_cast<int>(loops_.size()) + 1;
     ir::Stmt w;
     w.kind = ir::StmtKind::While;
     if (counter) {
@@ -843,7 +852,7 @@ bool UnitWriter::flow(const Flow& f, const Step& s) {
     if (it == unitNames_.end()) return fail(f.range, "the called program", "it was not loaded");
     kept_.add("subprogram calls", f.range);
     if (!t_.maxCallTimes || f.times <= t_.maxCallTimes) {
-      t_.call(last(f.range), it->second, f.times);
+      t_.call(t_.callsAlone ? open(f.range) : last(f.range), it->second, f.times);
       return true;
     }
     // more repeats than one call writes: the call alone in a repeat of the target
@@ -867,7 +876,10 @@ bool UnitWriter::flow(const Flow& f, const Step& s) {
   case FlowKind::EndProgram: {
     if (f.kind == FlowKind::Return) {
       const Remap* r = row(FlowAction::Return);
-      if (!r) return fail(f.range, "a return", fmt::format("{} has no return", t_.label));
+      if (!r && t_.returnAtEnd && lastContent_) return true; // the unit's closing line returns
+      if (!r)
+        return fail(f.range, "a return",
+                    fmt::format("{} returns only at the end of a program", t_.label));
       code(last(f.range), r->address[0], static_cast<int>(std::lround(*r->code * 10)));
       return true;
     }
@@ -901,6 +913,31 @@ bool UnitWriter::flow(const Flow& f, const Step& s) {
     return loopHead(f.condition, f.range, 0, 0);
   case FlowKind::WhileEnd:
     return loopTail(f.range);
+  case FlowKind::DoStart: {
+    if (!t_.doWhileLoops)
+      return fail(f.range, "a loop", fmt::format("{} has no such loop", t_.label));
+    kept_.add("loops", f.range);
+    Loop l;
+    l.id = ++loopSerial_;
+    ir::Stmt d;
+    d.kind = ir::StmtKind::Do;
+    d.loopId = l.id;
+    stmt(open(f.range), std::move(d));
+    loops_.push_back(std::move(l));
+    return true;
+  }
+  case FlowKind::DoEnd: {
+    if (loops_.empty()) return fail(f.range, "the end of a loop", "no loop is open");
+    const std::optional<ir::Expr> c = condition(*f.condition, f.range);
+    if (!c) return false;
+    ir::Stmt e;
+    e.kind = ir::StmtKind::End;
+    e.loopId = loops_.back().id;
+    e.cond = asCondition(*c);
+    loops_.pop_back();
+    stmt(open(f.range), std::move(e));
+    return true;
+  }
   case FlowKind::Jump:
     kept_.add("jumps", f.range);
     return jump(labelFor(f.label), f.condition, f.range, !s.hasNcPart() || t_.gotoJumps);
@@ -976,6 +1013,9 @@ bool endsProgram(const UnitSteps& main) {
 
 bool writeStructured(StructuredInput in, const StructuredSpelling& t, EmitterMaker emitter,
                      StructuredResult& out, Unkept& why) {
+  if (t.doWhileLoops && !t.gotoJumps && !t.guardJumps)
+    for (UnitSteps& u : in.units)
+      backwardJumpsAsDoLoops(u);
   if (!t.profile->controlFlow->hasVariables) {
     if (hasRow(t, FlowAction::RepeatStart))
       for (UnitSteps& u : in.units)
@@ -998,7 +1038,9 @@ bool writeStructured(StructuredInput in, const StructuredSpelling& t, EmitterMak
   }
   KeptLog kept;
   std::vector<int> counters = plan.counters;
+  int loopSerial = 0;
   std::ostringstream shared; // the units of a dialect that holds them in one file
+  std::string mainText;      // the main program's, when it comes after its subprograms
   for (std::size_t i = 0; i < in.units.size(); ++i) {
     const UnitSteps& u = in.units[i];
     const std::string& name = names[u.name];
@@ -1016,12 +1058,13 @@ bool writeStructured(StructuredInput in, const StructuredSpelling& t, EmitterMak
         blocks.push_back(std::move(b));
       }
     }
-    UnitWriter w(t, in, plan, names, counters, kept, why);
+    UnitWriter w(t, in, plan, names, counters, loopSerial, kept, why);
     if (!w.unit(u, blocks)) return false;
     for (ir::Block& b : t.closing(name, u.main))
       blocks.push_back(std::move(b));
     std::ostringstream text;
-    std::ostream& to = t.unitsInOneFile ? static_cast<std::ostream&>(shared) : text;
+    const bool apart = !t.unitsInOneFile || (u.main && t.subprogramsFirst);
+    std::ostream& to = apart ? text : static_cast<std::ostream&>(shared);
     std::unique_ptr<emit::ProgramEmitter> e = emitter(to);
     e->beginProgram({t.unitsInOneFile ? name : std::string()});
     for (const ir::Block& b : blocks)
@@ -1029,8 +1072,10 @@ bool writeStructured(StructuredInput in, const StructuredSpelling& t, EmitterMak
     e->endProgram();
     if (!t.unitsInOneFile)
       out.files.push_back({u.main ? std::string() : t.fileName(name), text.str()});
+    else if (apart)
+      mainText = text.str();
   }
-  if (t.unitsInOneFile) out.files.push_back({std::string(), shared.str()});
+  if (t.unitsInOneFile) out.files.push_back({std::string(), shared.str() + mainText});
   out.kept = kept.list();
   return true;
 }

@@ -45,13 +45,15 @@ bool planVariables(const std::vector<UnitSteps>& units, const ControlFlow& sourc
                    const ControlFlow& target, int counters, VariablePlan& plan, Unkept& why) {
   std::map<int, SourceRange> used; // first use of each variable
   std::set<int> read, written;
-  std::optional<SourceRange> localInCallee;
+  std::optional<SourceRange> localInCallee, localReadInCallee;
   for (const UnitSteps& u : units)
     for (const Step& s : u.steps)
       forEachVariable(s, [&](int n, const SourceRange& at, bool write) {
         used.emplace(n, at);
         (write ? written : read).insert(n);
         if (write && !u.main && isLocal(source.variables, n) && !localInCallee) localInCallee = at;
+        if (!write && !u.main && isLocal(source.variables, n) && !localReadInCallee)
+          localReadInCallee = at;
       });
   if (used.empty() && counters == 0) return true;
   if (!target.hasVariables) {
@@ -70,6 +72,14 @@ bool planVariables(const std::vector<UnitSteps>& units, const ControlFlow& sourc
     why = {*localInCallee, "a local variable written in a called program",
            "the source's callee writes its own copy of the caller's locals, the target's the "
            "caller's own"};
+    return false;
+  }
+  // a callee that reads a copy of its caller's locals (WL4 L) on a control whose calls start
+  // with locals of their own (LinuxCNC o-call)
+  if (source.callFrame == LocalFrame::Copy && target.callFrame == LocalFrame::Arguments &&
+      localReadInCallee) {
+    why = {*localReadInCallee, "a caller's local variable read in a called program",
+           "the source's callee reads a copy of its caller's locals, the target's its own"};
     return false;
   }
   std::set<int> taken;

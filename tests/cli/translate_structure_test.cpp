@@ -6,6 +6,8 @@
 // the exact text written.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include "support/cli_folder.h"
 
 namespace gcx::test {
@@ -495,6 +497,130 @@ TEST_F(TranslateStructure, Fms3000Spec_2_2_AReturnInTheMainProgramIsAnEndInNct) 
                            "G90 G0 X0 Y0 Z5\n"
                            "M98 P19\n"
                            "M2\n");
+}
+
+// --- LinuxCNC as the target of FMS-3000 and WL4 ----------------------------------------------
+
+// LinuxCNC's reader (rs274) proves these: without it the structured file is not written.
+class TranslateStructureNgc : public TranslateStructure {
+protected:
+  void SetUp() override {
+    if (std::system("command -v rs274 >/dev/null 2>&1") != 0) GTEST_SKIP() << "needs rs274";
+  }
+};
+
+// P019 is an o-word subroutine defined before the main program (LinuxCNC finds a numbered one
+// only in the calling file, defined before the call runs), called after its block's motion.
+TEST_F(TranslateStructureNgc, FmsPCallsBecomeOWordSubroutines) {
+  write("S.fms", kFmsCall);
+  write("019.fms", kFmsSub);
+  const CliResult r = gcx("translate S.fms --to ngc -o S.ngc");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("S.ngc"), "o<19> sub\n"
+                           "G91 G1 Z-7 F100\n"
+                           "G0 Z7\n"
+                           "G90\n"
+                           "o<19> endsub\n"
+                           "(translated from S.fms fms3000 by gcx)\n"
+                           "G90 G0 X0 Y0 Z5\n"
+                           "o<19> call\n"
+                           "G91 G0 Y10\n"
+                           "o<19> call\n"
+                           "G90 G0 Z50\n"
+                           "M30\n");
+  EXPECT_EQ(r.err, "gcx: note: S.fms: kept as LinuxCNC's own: subprogram calls (S.fms:2, 3)\n"
+                   "gcx: S.fms -> S.ngc: verified, moves the tool like the source within 0.001 "
+                   "mm\n");
+}
+
+// G25 L3 ... M25: a counter in a parameter of the main program, counted down by o-word while.
+TEST_F(TranslateStructureNgc, FmsRepeatBecomesOWordWhile) {
+  write("R.fms", kFmsRepeat);
+  const CliResult r = gcx("translate R.fms --to ngc -o R.ngc");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("R.ngc"), "(translated from R.fms fms3000 by gcx)\n"
+                           "G90 G0 X0 Y0 Z5\n"
+                           "#30 = 3\n"
+                           "o<l1> while [#30 GT 0]\n"
+                           "G91 G1 X10 F100\n"
+                           "G90\n"
+                           "#30 = [#30-1]\n"
+                           "o<l1> endwhile\n"
+                           "M30\n");
+}
+
+// A WL4 label with a jump back to it while a condition holds is LinuxCNC's do ... while; the
+// variables stay parameters, the expressions in LinuxCNC's brackets.
+TEST_F(TranslateStructureNgc, Wl4JumpBackToALabelBecomesDoWhile) {
+  write("L.wl4", "%L\n"
+                 "G90 G0 X0 Y0 Z5\n"
+                 "#1=0\n"
+                 "N010 G1 X(#1*10) F100\n"
+                 "#1=(#1+1)\n"
+                 "IF (#1<3) N10\n"
+                 "M30\n"
+                 "%\n");
+  const CliResult r = gcx("translate L.wl4 --to ngc -o L.ngc");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("L.ngc"), "(translated from L.wl4 wl4 by gcx)\n"
+                           "G90 G0 X0 Y0 Z5\n"
+                           "#1 = 0\n"
+                           "o<l1> do\n"
+                           "G1 X[#1*10] F100\n"
+                           "#1 = [#1+1]\n"
+                           "o<l1> while [#1 LT 3]\n"
+                           "M30\n");
+}
+
+// WL4 G81 calling %81 with #2 #3: LinuxCNC's G99 G81, each hole written whole (LinuxCNC asks R
+// again when the cycle code changes).
+TEST_F(TranslateStructureNgc, Wl4CycleProgramsBecomeLinuxCncCycles) {
+  write("C.wl4", "%C\n"
+                 "G90 G0 X0 Y0 Z50\n"
+                 "#2=2 #3=-10\n"
+                 "G81 G0 X10 Y10 F100\n"
+                 "X20\n"
+                 "G80\n"
+                 "G0 Z50\n"
+                 "M30\n"
+                 "%\n");
+  const CliResult r = gcx("translate C.wl4 --to ngc -o C.ngc");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("C.ngc"), "(translated from C.wl4 wl4 by gcx)\n"
+                           "G90 G0 X0 Y0 Z50\n"
+                           "#2 = 2\n"
+                           "#3 = -10\n"
+                           "G99 G81 X10 Y10 R2 Z-10 F100\n"
+                           "G99 G81 X20 Y10 R2 Z-10 F100\n"
+                           "G80\n"
+                           "G0 Z50\n"
+                           "M30\n");
+}
+
+// A WL4 callee starts with a copy of its caller's locals; a LinuxCNC subroutine with its own:
+// the program is written flat, and the note says where and why.
+TEST_F(TranslateStructureNgc, Wl4CalleeReadingItsCallersLocalsIsWrittenFlat) {
+  write("K.wl4", "%K\n"
+                 "G90 G0 X0 Y0 Z0\n"
+                 "#1=5\n"
+                 "L07\n"
+                 "M2\n"
+                 "%\n"
+                 "%07\n"
+                 "G1 X#1 F100\n"
+                 "M99\n"
+                 "%\n");
+  const CliResult r = gcx("translate K.wl4 --to ngc -o K.ngc");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("K.ngc"),
+            "(written as plain G0-G3 motion: K.wl4:8: a caller's local variable read in a called "
+            "program: the source's callee reads a copy of its caller's locals, the target's its "
+            "own)\n"
+            "(gcx canonical motion: machine frame, mm, absolute; offsets and tool lengths are in "
+            "the coordinates)\n"
+            "G21 G90 G94 G17 G40 G49 G80 G54\n"
+            "G1 X5 Y0 Z0 F100\n"
+            "M2\n");
 }
 
 } // namespace
