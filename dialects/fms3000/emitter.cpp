@@ -22,9 +22,9 @@ private:
 } // namespace
 
 emit::Capabilities emitterCapabilities() {
-  // the cycles G81-G88 and G150-G167 stay one block each; P calls and G25 repeats are
-  // expanded yet
-  return {emit::Construct::CannedCycles};
+  // the cycles G81-G88 and G150-G167 stay one block each, P calls and G25 ... M25 repeats as
+  // written (fms3000.md §6); no variables (the user-cycle language is refused, §6.4)
+  return {emit::Construct::CannedCycles, emit::Construct::Subprograms, emit::Construct::Loops};
 }
 
 std::unique_ptr<emit::ProgramEmitter> makeEmitter(std::ostream& out) {

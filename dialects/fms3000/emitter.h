@@ -8,7 +8,7 @@
 
 namespace gcx::fms3000 {
 
-/// The constructs gcx writes in FMS-3000 text: the cycles; calls and repeats are expanded.
+/// The constructs gcx writes in FMS-3000 text: the cycles, P calls and G25 repeats.
 emit::Capabilities emitterCapabilities();
 std::unique_ptr<emit::ProgramEmitter> makeEmitter(std::ostream& out);
 

@@ -36,9 +36,11 @@ struct CommonOptions {
 struct ExpandOptions {
   CommonOptions common;
   std::string to;
-  std::string expand = "macros,subprograms"; // --to nct: what to flatten
-  std::string keep;                          // --keep cycles | comp: structure the target keeps
-  std::string output;                        // empty: standard output
+  /// What to flatten for a dialect target; empty (gcx expand's default): what the target cannot
+  /// keep (a dialect without variables keeps its calls and repeats as written).
+  std::string expand = "macros,subprograms";
+  std::string keep;   // --keep cycles | comp: structure the target keeps
+  std::string output; // empty: standard output
   std::string setup;
   bool provenance = false;
 };

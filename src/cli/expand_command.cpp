@@ -1,7 +1,8 @@
 // gcx expand FILE --to canonical: the flat RS274/NGC program of the program's motion.
 // gcx expand FILE --to <dialect> --expand macros,subprograms: the program with macro statements,
 // variables and calls flattened into plain blocks written by the dialect's emitter, canned
-// cycles kept (the target must have them).
+// cycles kept (the target must have them). Without --expand, a target whose programs hold no
+// variables but calls and repeats (FMS-3000) keeps them: the program as written.
 #include <filesystem>
 #include <fmt/format.h>
 
@@ -30,9 +31,20 @@ bool runsCyclesItself(const Profile& p) {
   return false;
 }
 
+// A target whose programs have calls and repeats but no variables: nothing in a call or a
+// repeat is computed by the expansion, so the program as written means what its run does.
+bool keepsCallsAsWritten(const Dialect& target) {
+  const emit::Capabilities c = target.emits();
+  return c.has(emit::Construct::Subprograms) && c.has(emit::Construct::Loops) &&
+         !c.has(emit::Construct::Variables);
+}
+
 int expandToDialect(Session& s, const Dialect& target, const ExpandOptions& opt,
                     const machine::Setup& setup) {
-  if (opt.expand != "macros,subprograms" && opt.expand != "subprograms,macros") {
+  // no --expand: flatten what the target cannot keep
+  const bool asWritten = opt.expand.empty() && keepsCallsAsWritten(target);
+  if (!opt.expand.empty() && opt.expand != "macros,subprograms" &&
+      opt.expand != "subprograms,macros") {
     reportUsage("--to " + target.name +
                 " supports --expand macros,subprograms (cycles stay cycles); expanding "
                 "cycles is not implemented yet");
@@ -65,7 +77,8 @@ int expandToDialect(Session& s, const Dialect& target, const ExpandOptions& opt,
   std::unique_ptr<emit::ProgramEmitter> emitter = target.emitter(out.stream());
   emitter->beginProgram({});
   expander.onFlatBlock([&](const ir::Block& b) {
-    ir::Block flat = b; // comments and numbers do not survive, but those kept cycles refer to
+    if (asWritten) return; // the run only proves the program; its text is written below
+    ir::Block flat = b;    // comments and numbers do not survive, but those kept cycles refer to
     if (flat.sequence && !contours.keepsNumber(*flat.sequence)) {
       flat.sequence.reset();
       flat.sequenceText.clear();
@@ -76,7 +89,10 @@ int expandToDialect(Session& s, const Dialect& target, const ExpandOptions& opt,
     contours.written(flat);
     emitter->block(flat);
   });
-  const bool ok = expander.run(*main) && contours.check(s.diags());
+  const bool ok = expander.run(*main) && (asWritten || contours.check(s.diags()));
+  if (ok && asWritten) // every block as read, comments included: the calls stay calls
+    for (const ir::Block& b : main->blocks)
+      emitter->block(b);
   emitter->endProgram();
   s.flushDiagnostics();
   if (!ok) return ProgramErrors;

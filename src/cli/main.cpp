@@ -86,6 +86,7 @@ int main(int argc, char** argv) {
   addCommon(dump);
 
   ExpandOptions expandOpt;
+  expandOpt.expand.clear(); // flatten what the target cannot keep, unless --expand says
   std::string expandFile;
   CLI::App* expand = app.add_subcommand("expand", "expand to flat motion in a target dialect");
   expand->add_option("FILE", expandFile, "program file")->required();
@@ -98,7 +99,9 @@ int main(int argc, char** argv) {
   expand->add_option("--setup", expandOpt.setup, "machine setup (JSON): offsets, tools, ...");
   expand->add_flag("--provenance", expandOpt.provenance, "a source comment on each line");
   expand->add_option("--expand", expandOpt.expand,
-                     "with --to nct: what to flatten (macros,subprograms; cycles stay cycles)");
+                     "with --to <dialect>: macros,subprograms flattens macros, calls and repeats "
+                     "(cycles stay cycles); default: what the target cannot keep (a dialect "
+                     "without variables keeps its calls and repeats as written)");
   expand->add_option("--keep", expandOpt.keep,
                      "structure to keep where the target expresses it: cycles (--to nct; the "
                      "default there; --to canonical expands every cycle), comp (--to canonical: "

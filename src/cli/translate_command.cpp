@@ -218,7 +218,12 @@ int runTranslate(const std::string& input, const TranslateOptions& opt) {
                                            : runExpand(input, expand))
       return rc;
     if (target->name == "ngc" && !prependComment(staged.string(), note)) return UsageError;
-    if (opt.verify && !verified(input, staged, target->dialect != nullptr, opt))
+    // printed as written, the result calls the source's programs: beside it, else in --lib,
+    // else where the source found them
+    TranslateOptions proof = opt;
+    if (target->printSource)
+      proof.common.libraryDirs.push_back(fs::absolute(input).parent_path().string());
+    if (opt.verify && !verified(input, staged, target->dialect != nullptr, proof))
       return ProgramErrors;
   }
   if (opt.output.empty()) {

@@ -19,6 +19,8 @@ enum class LevelCycle : unsigned char {
   // turning on the lathe axes
   LongitudinalPass,
   FacingPass,
+  LongitudinalMultiPass,
+  FacingMultiPass,
   DeepDrillZ,
   PeckGrooveX,
   DeepDrillZDecreasing,
@@ -27,6 +29,7 @@ enum class LevelCycle : unsigned char {
   FaceGrooves,
   ChipBreakDrillZ,
   ChipBreakGrooveX,
+  MultiPassThread,
   TapOrDie,
   LongitudinalRoughing, // to a profile that ends at `endcont`
   FacingRoughing,       // the same, across

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <fmt/format.h>
 
-#include "cycles/level_drilling.h"
 #include "cycles/level_turning_parts.h"
 
 namespace gcx::cycles {
@@ -72,22 +71,14 @@ bool cut(TurningPath& path, const LevelTurnRequest& req, int cutAxis, double hit
     path.feed(p, feed);
     return true;
   }
-  LevelDrillRequest steps;
-  steps.cycle = LevelCycle::ChipBreakDrill;
-  steps.axis = cutAxis == 0 ? kZ : kX;
-  steps.position = path.program(path.at());
-  steps.words = {{'U', path.at()[cutAxis]},
-                 {'Z', hit},
-                 {'V', req.words.at('V')},
-                 {'W', req.words.at('W')},
-                 {'F', feed}};
-  const auto ops = expandLevelHole(steps);
+  const auto ops = chipBreakingCut(path.program(path.at()), cutAxis == 0 ? kZ : kX, hit,
+                                   req.words.at('V'), req.words.at('W'), feed);
   if (!std::holds_alternative<std::vector<CycleOp>>(ops)) return false;
-  for (const CycleOp& op : std::get<std::vector<CycleOp>>(ops)) { // up to the bottom
-    if (op.kind == OpKind::Rapid) path.rapid(path.lathe(op.to));
-    if (op.kind != OpKind::Feed) continue;
-    path.feed(path.lathe(op.to), feed);
-    if (std::abs(path.at()[cutAxis] - hit) < kTol) break;
+  for (const CycleOp& op : std::get<std::vector<CycleOp>>(ops)) {
+    if (op.kind == OpKind::Rapid)
+      path.rapid(path.lathe(op.to));
+    else
+      path.feed(path.lathe(op.to), feed);
   }
   return true;
 }

@@ -1,6 +1,7 @@
 // The FMS-3000 turning cycles whose parameters follow the code (fms3000.md §5.3, cycles.md
 // appendix A.5), on the lathe axes X (slot 0, as radius) and Z (slot 2): G150/G151 single-pass
-// turning and facing, G154-G157/G160/G161 drilling along Z and grooving along X (the G83/G86
+// turning and facing, G152/G153 multi-pass turning and facing, G162 multi-pass thread,
+// G154-G157/G160/G161 drilling along Z and grooving along X (the G83/G86
 // sequences of the level drilling cycles, then the final position), G158/G159 grooves,
 // G163 tapping, G164/G165 roughing to a profile, G166 chamfer and G167 fillet. A pure function of
 // its inputs: the ops from the cycle's start point (И.Т.), in program coordinates.
@@ -29,7 +30,8 @@ struct LevelTurnRequest {
   bool modalRapid = false;          // G166/G167: the straight part under G0 (else G1)
   double feed = 0;                  // F when not among the words
   double dwellSecondsPerUnit = 0.1; // E
-  int spindleDirection = 0;         // G163: +1 M3, -1 M4, 0 stopped (the direction it reverses)
+  int spindleDirection = 0;       // G162, G163: +1 M3, -1 M4, 0 stopped (the direction it reverses)
+  bool feedPerRevolution = false; // G95
   /// G164/G165: the approach block and the profile up to `endcont`, traced (contour.h).
   const Profile* profile = nullptr;
 };
@@ -45,6 +47,10 @@ std::optional<ProfileFault> checkRoughingProfile(LevelCycle cycle, std::string_v
 
 /// The parameters of `cycle` measured along X: diameters when X is programmed as a diameter.
 std::string_view diameterWords(LevelCycle cycle);
+
+/// The message of a part of the request gcx does not implement yet (a located GCX030, never a
+/// guess): the cone of G152/G153, G162 under G95.
+std::optional<std::string> notImplemented(const LevelTurnRequest& req);
 
 /// The ops, or the message of a missing, extra or bad parameter. Zero-length moves are left out.
 std::variant<std::vector<CycleOp>, std::string> expandLevelTurning(const LevelTurnRequest& req);

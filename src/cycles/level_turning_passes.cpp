@@ -38,11 +38,9 @@ Result singlePassFacing(const LevelTurnRequest& req, double feed) {
 // the bottom X and a rapid back to x0; between grooves Z moves at F, or rapid with the G0 flag.
 // G159 (Table 28) the same with X and Z swapped. The cycle ends out of the last groove.
 Result grooves(const LevelTurnRequest& req, double feed) {
-  const bool face = req.cycle == LevelCycle::FaceGrooves;
-  const int deep = face ? kZ : kX, step = face ? kX : kZ;
-  const char deepWord = face ? 'Z' : 'X', stepWord = face ? 'X' : 'Z';
-  const double out = req.position[deep], first = req.position[step];
-  const double bottom = position(req, deepWord, out), last = position(req, stepWord, first);
+  const DepthAndCut ax = depthAndCut(req, req.cycle == LevelCycle::FaceGrooves);
+  const int deep = ax.depth, step = ax.cut;
+  const double out = ax.out, first = ax.back, bottom = ax.bottom, last = ax.end;
   const double pitch = std::abs(req.words.at('Q'));
   if (pitch < 0.0005) return fmt::format("{}: the pitch Q must not be 0", req.code);
   const double s = sign(last - first), travel = std::abs(last - first);

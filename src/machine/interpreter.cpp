@@ -1224,6 +1224,12 @@ bool Interpreter::arc(const BlockWords& w, const Vec3& end, const motion::Extra&
   centre[ax.second] = c2;
   if (helixPitch) { // FMS-3000 G10: the turns follow from the travel and the pitch (§3.6)
     const double travel = end[ax.normal] - start[ax.normal];
+    // the pitch letter of another linear axis (U V W, rotary) is not documented (§10 Q4)
+    if (std::fabs(travel) < 1e-9 && (extraEnd - extra_).cwiseAbs().maxCoeff() > 1e-9)
+      return fail(diag::code::NotImplemented, at,
+                  fmt::format("a helix along another axis than {} is not implemented yet: the "
+                              "manual names no pitch letter for it (fms3000.md §10 Q4)",
+                              "XYZ"[ax.normal]));
     if (std::fabs(travel) < 1e-9)
       return fail(diag::code::ArcDefinition, at,
                   "a helix needs a move of the axis outside the arc's plane");

@@ -35,6 +35,9 @@ bool Interpreter::levelTurning(const SourceRange& code, const cycles::Profile* p
   req.dwellSecondsPerUnit = profile_.machine.dwell.secondsPerUnit;
   req.profile = profile;
   req.spindleDirection = state_.spindleDirection;
+  req.feedPerRevolution = state_.perRevolution;
+  if (const auto missing = cycles::notImplemented(req))
+    return fail(diag::code::NotImplemented, code, *missing);
   if (auto f = levelWords_.find('F'); f != levelWords_.end()) state_.feed = f->second;
   const auto ops = cycles::expandLevelTurning(req);
   if (const std::string* why = std::get_if<std::string>(&ops))

@@ -1,6 +1,7 @@
 // Round trip through the command line (fms3000.md §7, §8; issue 12 "Round trip"): every positive
-// vector of §8 and every runnable example of §7 is written to files, expanded by
-// `gcx expand --to fms3000`, and the expanded program is proven by `gcx equiv` (the same
+// vector of §8 and every runnable example of §7 is written to files, written again by
+// `gcx expand --to fms3000` (calls and repeats kept), by its flat form and by
+// `gcx translate --to fms3000`, and each written program is proven by `gcx equiv` (the same
 // equivalence engine) to move the tool as the original does, under the setup the vector names
 // (N3021 modes, D and H registers, work offsets, N7006, N3023).
 #include <gtest/gtest.h>
@@ -133,6 +134,37 @@ std::vector<Case> examples() {
       {"E39", "N1M3S100 · N2X50 · N3 G96 S150 LIMS1100 · N4X25 · N5G97 · M30", s0(R"("N7006": 1)")},
       {"E41", "X1000P19 · M30", s0(), {{"19", "G91G1Y5F100 · M99"}}},
       {"E43", "GG0X10 · GG17 · GG2X20I5F100 · M30", s0()},
+      // the symbolic and partial examples, with values where the spec leaves them open
+      {"E1", "N1 G1 X10 Y20 F100 S500 M3 · N2 F100 G1 X10 Y20 M3 S500 · M30", s0()},
+      {"E3", "G91 G25 L3 · G1 X10 F100 · M25 · M30", s0()},
+      {"E4_E5", "G36X10Y10 · N100G0I20A30 · N100G1I20A60F100 · N100G2I20A180R20 · G35 · M30",
+       s0()},
+      {"E11_G17", "G17Z5 · M30", s0()},
+      {"E15",
+       "G17G02X10Y10I5J5F100 · G0X0Y0Z0 · G18G03Z10X10K5I5F100 · G0X0Y0Z0 · "
+       "G19G02Y10Z10J5K5F100 · M30",
+       s0()},
+      {"E23", "G92X10Y20Z30 · G1X0Y0F100 · G92X100Y50 · G1X0Y0 · M30", s0()},
+      {"E24", "G0X-10Y-10 · G1G41 D34 X0Y0F100 · Y20 · X20 · G0G40X30Y30 · M30",
+       s0("", R"("tools": {"34": {"radius": 2}})")},
+      {"E25", "G0Z100 · G43 H1 · G0Z10 · G44 H1 · G0Z10 · G49 · G0Z10 · M30",
+       s0("", R"("tools": {"1": {"length": 50}})")},
+      {"E27", "G0X0Y0 · G1G41D1X10Y10F100 · N10G1X100Y100 · N11G40Y50 · M30",
+       s0("", R"("tools": {"1": {"radius": 2}})")},
+      {"E31",
+       "G0Z10 · G81Z-10U2I5F100E5 · G82U2Z-10I5F100E5H50 · G83Z-10U2V4W1I5F100E5 · M3S100 · "
+       "G84U5Z-20I5F300E5M1 · G80 · M30",
+       s0()},
+      {"E33",
+       "G18 G0 X30 Z2 · G150X20Z-30P10Q25F100G0 · G0X0Z5 · G154U1Z-20V8W1I1F50X10 · "
+       "G0X30Z-10 · G155U22X10V4W1I26F50Z5 · G0X30Z0 · G158X20Z-12Q5F100G0 · G0X0Z5 · "
+       "G160U1Z-20V8W1I1F50X10 · M3S500 · G0X0Z5 · G163Z-20F1.5X10M5I1 · M30",
+       s0()},
+      {"E35", "G18 G0 X20 Z2 · G165Q1V1W0.5F0.5G0D0.5P1 · G1X10 · G1X5Z-10 · endcont · M30",
+       s0()},
+      {"E42", "N100G1X100Y100F100 · N100GG1X100Y0 · M30", s0()},
+      {"E44", "G18 G0 X40 Z2 · M3 S100 · G162X30Z-48H500W-20V2F1.961 · M30",
+       s0(R"("N7006": 1)")},
   };
 }
 
@@ -141,7 +173,9 @@ protected:
   CliFolder folder_{"fms3000-roundtrip"};
 };
 
-// parse (as the source) -> `expand --to fms3000` -> parse (as the expanded program) -> `equiv`
+// parse (as the source) -> `expand --to fms3000` (P calls and repeats kept), the same with
+// `--expand macros,subprograms` (run out), `translate --to fms3000` (printed as written) ->
+// parse (as the written program, among the same called programs) -> `equiv`
 TEST_P(Fms3000ExpandRoundTrip, ExpandedProgramMovesTheSame) {
   const Case& c = GetParam();
   folder_.write("1.fms", specBlocks(c.program));
@@ -151,12 +185,16 @@ TEST_P(Fms3000ExpandRoundTrip, ExpandedProgramMovesTheSame) {
   const CliResult run = folder_.gcx("run 1.fms --setup setup.json");
   ASSERT_EQ(run.exitCode, 0) << run.err;
   ASSERT_FALSE(run.out.empty()); // the original moves
-  const CliResult e = folder_.gcx("expand 1.fms --to fms3000 --setup setup.json -o 2.fms");
-  ASSERT_EQ(e.exitCode, 0) << e.err;
-  const std::string text = readFile(folder_.path() / "2.fms");
-  const CliResult q = folder_.gcx("equiv 1.fms 2.fms --setup setup.json");
-  EXPECT_EQ(q.exitCode, 0) << q.out << q.err << "\n" << text;
-  EXPECT_EQ(q.err, "") << text;
+  for (const char* write :
+       {"expand 1.fms --to fms3000", "expand 1.fms --to fms3000 --expand macros,subprograms",
+        "translate 1.fms --to fms3000"}) {
+    const CliResult e = folder_.gcx(fmt::format("{} --setup setup.json -o 2.fms", write));
+    ASSERT_EQ(e.exitCode, 0) << write << "\n" << e.err;
+    const std::string text = readFile(folder_.path() / "2.fms");
+    const CliResult q = folder_.gcx("equiv 1.fms 2.fms --setup setup.json");
+    EXPECT_EQ(q.exitCode, 0) << write << "\n" << q.out << q.err << "\n" << text;
+    EXPECT_EQ(q.err, "") << write << "\n" << text;
+  }
 }
 
 std::string caseName(const testing::TestParamInfo<Case>& info) {

@@ -1,7 +1,8 @@
 // Every decoded example of fms3000.md §7 (cleaned as the spec says: OCR `1`/`|` = I, `O` = 0,
 // `2` = Z) is read by the FMS-3000 front end without an error and written back by `gcx fmt`
 // word for word. General forms (`G81 U_ Z_ ...`) are written with sample values; E44 is a
-// computation, not a program, and is checked with G162 (fms3000.md §5.3).
+// computation, not a program: here the G162 blocks that use it, and its motion is checked in
+// fms3000_multipass_test.cpp (FmsSpec_5_3_G162.E44TaperPitchAlongTheLongerTravelAndTheRunOut).
 #include <gtest/gtest.h>
 
 #include "support/fms3000_support.h"
@@ -181,6 +182,10 @@ const Example kExamples[] = {
      "N100G1X100Y100|N100GG1X100Y100",
      {"N100 G1 X100 Y100", "N100 GG1 X100 Y100"}},
     {"E43", "001:331-334", "GG0|GG2|GG17", {"GG0", "GG2", "GG17"}},
+    {"E44",
+     "001:3181-3199",
+     "G162X30Z-48H500W-20V2F1.961|G162X24Z-20H300P1.3Q0.5A-30F2",
+     {"G162 X30 Z-48 H500 W-20 V2 F1.961", "G162 X24 Z-20 H300 P1.3 Q0.5 A-30 F2"}},
 };
 
 std::string crlf(std::string code) {

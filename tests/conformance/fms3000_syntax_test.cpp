@@ -204,5 +204,55 @@ TEST(Fms3000Syntax_9, FanucHabitsAreWarnedWithTheirLikelyIntent) {
       V{});
 }
 
+// §9 and issue 12: each Fanuc spelling runs with its FMS-3000 meaning or stops at a located
+// error, and its warning names what the Fanuc habit meant.
+TEST(Fms3000Syntax_9, EachFanucTrapRunsAsFms3000OrStopsWithItsIntentNamed) {
+  struct Trap {
+    const char* program;
+    V errors, warnings;
+    const char* intent; // what the warning must say the Fanuc spelling meant
+  };
+  const Trap traps[] = {
+      // G10 L2 P1 (Fanuc: set offset data): G10 is a helix; L belongs to G25
+      {"G10 L2 P1 X0 Y0\r\nM30\r\n",
+       {"main.fms:1:5 2064"},
+       {"main.fms:1:1 GCXW11"},
+       "Fanuc's data setting G10 L_ P_"},
+      // M98 P1000 (Fanuc: call program 1000): M98 ends the program, P1000 alone calls
+      {"M98 P1000\r\n",
+       {"main.fms:1:5 FMSX03"},
+       {"main.fms:1:1 GCXW11"},
+       "the Fanuc call 'M98 P1000' is written 'P1000' alone"},
+      // G04 P500 (Fanuc: dwell 0.5 s): the dwell is E; P500 calls a program
+      {"G04 P500\r\nM30\r\n",
+       {"main.fms:1:1 2004"},
+       {"main.fms:1:5 GCXW11"},
+       "P500 is the Fanuc dwell"},
+      // G81 ... R2 (Fanuc: the R level) and G98/G99 (Fanuc: the return level)
+      {"G0 Z10\r\nG81 U1 Z-5 R2 F100\r\nM30\r\n",
+       {"main.fms:2:1 2004"},
+       {"main.fms:2:12 GCXW11"},
+       "'R2' is a Fanuc cycle word"},
+      {"G0 Z10\r\nG98 G81 U1 Z-5 F100\r\nM30\r\n",
+       {"main.fms:2:1 GCX031"},
+       {"main.fms:2:1 GCXW11", "main.fms:2:1 GCX013"},
+       "'G98' is a Fanuc cycle word"},
+  };
+  for (const Trap& t : traps) {
+    const MacroRun r = runFms(t.program);
+    EXPECT_EQ(r.errors, t.errors) << t.program << r.rendered;
+    EXPECT_EQ(r.warnings, t.warnings) << t.program << r.rendered;
+    EXPECT_NE(r.rendered.find(t.intent), std::string::npos) << t.program << r.rendered;
+  }
+  // written the FMS-3000 way they mean what the manual says: a program call, a dwell, levels
+  const MacroRun r =
+      runFms({{"main.fms", "G04 E5\r\nP1000\r\nG0 Z10\r\nG81 U2 Z-5 F100\r\nM30\r\n"},
+              {"1000.fms", "G91 G1 X5 F100\r\nG90 M99\r\n"}});
+  EXPECT_EQ(r.errors, V{}) << r.rendered;
+  EXPECT_EQ(r.warnings, V{}) << r.rendered;
+  EXPECT_EQ(r.motion(), (V{"DW 0.5s", "L 5,0,0 F100", "R 5,0,10", "R 5,0,2", "L 5,0,-5 F100",
+                           "R 5,0,2", "END"}));
+}
+
 } // namespace
 } // namespace gcx::test

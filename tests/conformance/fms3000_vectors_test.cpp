@@ -96,6 +96,13 @@ TEST(Fms3000Vectors_8, HelixWithoutPitchOrTravel) {
   EXPECT_EQ(errorsOf("G91G2G10X-50Y-50I-50Z-40K160F100"), V{"main.fms:1:25 2015"}); // sign
 }
 
+TEST(Fms3000Helix_3_6, AHelixAlongAnotherFreeAxisIsNotImplementedYet) {
+  // the linear axis may be any free axis (001:1433-1436), but no pitch letter is named for one
+  // outside X Y Z (fms3000.md §10 Q4): a located GCX030, not "no travel" nor a guessed letter
+  EXPECT_EQ(errorsOf("G0X10 · G2G10X10Y0I-10W5K2F100"), V{"main.fms:2:1 GCX030"});
+  EXPECT_EQ(errorsOf("G0X10 · G3G10X10Y0I-10A90K90F100"), V{"main.fms:2:1 GCX030"});
+}
+
 TEST(Fms3000Vectors_8, T11_ImplicitCoordinateLinesAndQuarterCircles) {
   EXPECT_EQ(run("G1G91X10G47F100 · G1G91X10G48 · G2G91X-10G48 · G2G91Y10G48 · M30"),
             (V{"L 10,10,0 F100", "L 20,0,0 F100", "CW 10,-10,0 C10,0 r10 θ90",
@@ -361,6 +368,9 @@ TEST(Fms3000Vectors_8, T29_ManualE34RoughingThenTheExplicitFinish) {
       V(m.begin(), m.begin() + 10),
       (V{"R 0,0,5", "R 50,0,5", "R 49.25,0,5", "L 49.25,0,-99.25 F0.5", "R 49.5,0,-99.25",
          "R 49.5,0,5", "R 48.5,0,5", "L 48.5,0,-98.5 F0.5", "R 48.75,0,-98.5", "R 48.75,0,5"}));
+  // the 59 levels X98.5, X97, ... X11.5 (§8 T29), each reached by the rapid of its pass
+  for (int k = 0; k < 59; ++k)
+    EXPECT_EQ(m[2 + 4 * k], "R " + n4(49.25 - 0.75 * k) + ",0,5") << "level " << k + 1;
   // level X40 meets N70 along its length: the cut ends at its end nearest z0 (§5.3.1)
   EXPECT_EQ(m[2 + 39 * 4 + 1], "L 20,0,-50 F0.5");
   EXPECT_EQ(

@@ -37,11 +37,16 @@ machine::Setup setupOf(const std::string& name) {
   return setupFileOrDefault(folder() / (name + ".setup.json"), "fms3000");
 }
 
-MacroRun runProgram(const std::string& name) {
-  std::map<std::string, std::string> files{{"main.fms", readFile(folder() / (name + ".fms"))}};
+/// `text` as the main program among the folder's program units, on the setup of program `name`.
+MacroRun runAmongUnits(const std::string& text, const std::string& name) {
+  std::map<std::string, std::string> files{{"main.fms", text}};
   for (const fs::path& p : filesUnder(folder(), {".fms"}))
     if (isProgramUnit(p)) files[p.filename().string()] = readFile(p);
   return runFms(files, setupOf(name));
+}
+
+MacroRun runProgram(const std::string& name) {
+  return runAmongUnits(readFile(folder() / (name + ".fms")), name);
 }
 
 class Fms3000Differential : public testing::TestWithParam<std::string> {};
@@ -65,22 +70,25 @@ TEST_P(Fms3000Differential, Rs274ReproducesTheCanonicalOutput) {
 }
 
 TEST_P(Fms3000Differential, ExpandedToFms3000ItMovesTheSame) {
-  // the round trip of issue 12: parse -> `gcx expand --to fms3000` (cycles kept, calls and
-  // repeats expanded) -> parse gives the same motion
-  const fs::path out = fs::temp_directory_path() / ("gcx-fms-roundtrip-" + GetParam() + ".fms");
-  const fs::path setup = folder() / (GetParam() + ".setup.json");
-  const std::string command =
-      fmt::format("cd {} && {} expand {}.fms --to fms3000 {} -o {} >/dev/null 2>&1",
-                  folder().string(), GCX_BINARY, GetParam(),
-                  fs::exists(setup) ? "--setup " + setup.string() : std::string(), out.string());
-  ASSERT_EQ(std::system(command.c_str()), 0) << command;
-  const std::string text = readFile(out);
-  fs::remove(out);
+  // the round trip of issue 12: parse -> `gcx expand --to fms3000` (cycles, P calls and repeats
+  // kept; with --expand macros,subprograms calls and repeats run out) -> parse among the same
+  // program units gives the same motion
   const MacroRun a = runProgram(GetParam());
-  const MacroRun b = runFms(text, setupOf(GetParam()));
   ASSERT_TRUE(a.errors.empty()) << a.rendered;
-  ASSERT_TRUE(b.errors.empty()) << b.rendered << text;
-  EXPECT_EQ(b.motion(), a.motion()) << text;
+  for (const char* form : {"", " --expand macros,subprograms"}) {
+    const fs::path out = fs::temp_directory_path() / ("gcx-fms-roundtrip-" + GetParam() + ".fms");
+    const fs::path setup = folder() / (GetParam() + ".setup.json");
+    const std::string command =
+        fmt::format("cd {} && {} expand {}.fms --to fms3000{} {} -o {} >/dev/null 2>&1",
+                    folder().string(), GCX_BINARY, GetParam(), form,
+                    fs::exists(setup) ? "--setup " + setup.string() : std::string(), out.string());
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    const std::string text = readFile(out);
+    fs::remove(out);
+    const MacroRun b = runAmongUnits(text, GetParam());
+    ASSERT_TRUE(b.errors.empty()) << form << b.rendered << text;
+    EXPECT_EQ(b.motion(), a.motion()) << form << text;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Fms3000, Fms3000Differential, testing::ValuesIn(names()),
