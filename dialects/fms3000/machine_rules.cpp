@@ -31,11 +31,24 @@ std::vector<MCodeSpec> mcodes() {
   using T = MTiming;
   // fms3000.md §2.2; timing per §1.4: M03/M04 before the motion, M05 and the stops after it
   return {
-      {0, A::Stop, T::AfterMotion},        {1, A::OptionalStop, T::AfterMotion},
-      {2, A::End, T::AfterMotion},         {30, A::EndRewind, T::AfterMotion},
-      {3, A::SpindleCW, T::BeforeMotion},  {4, A::SpindleCCW, T::BeforeMotion},
-      {5, A::SpindleStop, T::AfterMotion}, {25, A::Subprogram, T::AfterMotion},
-      {98, A::Subprogram, T::AfterMotion}, {99, A::Subprogram, T::AfterMotion},
+      {0, A::Stop, T::AfterMotion},
+      {1, A::OptionalStop, T::AfterMotion},
+      {2, A::End, T::AfterMotion},
+      {30, A::EndRewind, T::AfterMotion},
+      {3, A::SpindleCW, T::BeforeMotion},
+      {4, A::SpindleCCW, T::BeforeMotion},
+      {5, A::SpindleStop, T::AfterMotion},
+      {25, A::Subprogram, T::AfterMotion},
+      {98, A::Subprogram, T::AfterMotion},
+      {99, A::Subprogram, T::AfterMotion},
+      // The manual leaves every other M code to the machine's automation (001:3720-3721); the
+      // machines follow the ГОСТ 20999-83 table it starts from (book-reference.md §2.2): M06
+      // tool change, M07 coolant 2 (mist), M08 coolant 1 (flood), M09 coolant off. Coolant on
+      // with the motion, off and the change after it, as M03/M05.
+      {6, A::ToolChange, T::AfterMotion},
+      {7, A::Coolant, T::BeforeMotion},
+      {8, A::Coolant, T::BeforeMotion},
+      {9, A::Coolant, T::AfterMotion},
   };
 }
 

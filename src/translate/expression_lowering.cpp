@@ -92,6 +92,8 @@ std::optional<ir::Expr> Lowering::lower(const ir::Expr& e) {
   }
   if (writes(out)) return out;
   if (std::optional<ir::Expr> r = rewritten(out)) return r;
+  if (const std::optional<double> v = foldConstant(out)) // numbers only: the value itself
+    return ir::Expr::literal(*v, out.range);
   why_ = fmt::format("{} has no {} of the same meaning", t_.label,
                      out.kind == ir::ExprKind::Call     ? ir::spelling(out.func)
                      : out.kind == ir::ExprKind::Binary ? ir::spelling(out.op)
@@ -120,6 +122,15 @@ std::optional<ir::Expr> Lowering::rewritten(const ir::Expr& e) {
     ir::Expr a = call(ir::Func::Atan2, e.args[0]); // ATAN(a)/(1)
     a.args.push_back(ir::Expr::literal(1));
     r = a;
+  } else if (e.kind == ir::ExprKind::Binary && e.op == ir::Op::Pow &&
+             e.args[1].kind == ir::ExprKind::Number && e.args[1].number >= 1 &&
+             e.args[1].number <= 4 && e.args[1].number == std::floor(e.args[1].number)) {
+    // a small whole power: the base multiplied by itself
+    const ir::Expr base = bracketed(e.args[0]);
+    ir::Expr product = base;
+    for (int i = 1; i < static_cast<int>(e.args[1].number); ++i)
+      product = binary(ir::Op::Mul, product, base);
+    r = bracketed(product);
   } else if (e.kind == ir::ExprKind::Binary && e.op == ir::Op::Mod) {
     // the dividend's sign: a - b * trunc(a / b)
     const ir::Expr a = bracketed(e.args[0]), b = bracketed(e.args[1]);
@@ -219,6 +230,12 @@ std::optional<double> foldConstant(const ir::Expr& e) {
       return a[0] / a[1];
     case ir::Op::Pow:
       return std::pow(a[0], a[1]);
+    case ir::Op::Mod: // the dividend's sign (NCT)
+      if (a[1] == 0) return std::nullopt;
+      return std::fmod(a[0], a[1]);
+    case ir::Op::FloorMod: // 0 <= r < |b| (WL4)
+      if (a[1] == 0) return std::nullopt;
+      return a[0] - std::fabs(a[1]) * std::floor(a[0] / std::fabs(a[1]));
     default:
       return std::nullopt;
     }

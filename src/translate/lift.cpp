@@ -267,6 +267,23 @@ bool Lifter::block(const ir::Block& b, Step& s) {
     }
   });
   if (failed) return false;
+  if (s.otherwise) {
+    // the words after the IF replace those of their letter before it: one move with the final
+    // values (wl4.md §1.9); what follows the IF is words only
+    if (s.modes.size() != s.otherwise->modes.size() || !s.after.empty() ||
+        s.machine.size() != s.otherwise->machine.size() ||
+        s.dwellSeconds.has_value() != s.otherwise->dwellSeconds.has_value())
+      return fail(s.range, "IF in the middle of a block",
+                  "only axis and value words may follow it to be kept");
+    std::vector<Operand> merged;
+    for (std::size_t i = 0; i < s.words.size(); ++i) {
+      bool later = false;
+      for (std::size_t j = i + 1; j < s.words.size(); ++j)
+        later = later || s.words[j].letter == s.words[i].letter;
+      if (!later) merged.push_back(s.words[i]);
+    }
+    s.words = std::move(merged);
+  }
   // a return straight to machine zero names its axes; their values mean nothing
   for (const Mode& m : s.modes)
     if (m.action == GAction::ReferenceReturn && p_.machine.directReferencePointKey)
@@ -350,10 +367,17 @@ bool Lifter::statement(const ir::Stmt& st, Step& s, bool afterNc) {
     if (st.precision)
       return fail(st.range, fmt::format("IF{}", *st.precision),
                   "a comparison rounded to a precision has no form on the other controls");
-    if (s.hasNcPart() || !s.after.empty())
-      return fail(st.range, "IF after the block's words",
-                  "the words before it act whatever the condition says; the other controls "
-                  "guard a whole block");
+    if (!s.after.empty() || s.guard)
+      return fail(st.range, "IF after the block's statements",
+                  "the statements before it act whatever the condition says");
+    if (s.hasNcPart()) { // the words so far run alone when it fails, with the rest when it holds
+      s.otherwise = std::make_shared<Step>();
+      s.otherwise->range = s.range;
+      s.otherwise->modes = s.modes;
+      s.otherwise->words = s.words;
+      s.otherwise->dwellSeconds = s.dwellSeconds;
+      s.otherwise->machine = s.machine;
+    }
     s.guard = st.value;
     return true;
   case ir::StmtKind::Goto:

@@ -4,6 +4,7 @@
 // with no dialect's numbers left. translate/lift.h builds steps from a dialect's blocks;
 // translate/structured_writer.h writes them in another.
 #pragma once
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -83,6 +84,9 @@ struct Step {
   std::vector<Flow> before;
   /// The rest of the step runs only when this holds (WL4 `IF (c) ...`, NCT `IF [c] THEN`).
   std::optional<ir::Expr> guard;
+  /// What runs instead when the guard fails: the NC words before a WL4 IF in the middle of a
+  /// block (`G1 X0 Z100 IF (c) Z0` moves to Z0 when c holds, to Z100 when not, wl4.md §6.5).
+  std::shared_ptr<Step> otherwise;
   std::vector<Mode> modes;
   std::vector<Operand> words;
   std::optional<Value> dwellSeconds;

@@ -690,6 +690,23 @@ bool UnitWriter::guarded(const Step& s) {
     kept_.add("variables", s.range);
     return true;
   }
+  if (s.otherwise) { // if ... else: the whole block when it holds, the words before IF when not
+    if (!t_.gotoJumps)
+      return fail(s.range, "IF in the middle of a block",
+                  fmt::format("{} has no jumps to write its two branches with", t_.label));
+    const std::string otherwise = freshLabel(), end = freshLabel();
+    Step taken = s;
+    taken.guard.reset();
+    taken.otherwise.reset();
+    if (!jump(otherwise, negated(*s.guard), s.range, true) || !ncPart(taken) ||
+        !jump(end, std::nullopt, s.range, true))
+      return false;
+    pendingLabel_ = otherwise; // on the first block of the other branch
+    if (!ncPart(*s.otherwise)) return false;
+    labelBlock(end, s.range);
+    kept_.add("conditions", s.range);
+    return true;
+  }
   // anything else: jump over the step when the condition fails
   const std::string skip = freshLabel();
   if (!jump(skip, negated(*s.guard), s.range, true)) return false;

@@ -39,6 +39,7 @@ void forEachVariable(const Step& s, const std::function<void(int, const SourceRa
   if (s.dwellSeconds && !s.dwellSeconds->literal) forEachIn(s.dwellSeconds->expr, f);
   for (const Flow& fl : s.after)
     forEachInFlow(fl, f);
+  if (s.otherwise) forEachVariable(*s.otherwise, f);
 }
 
 bool planVariables(const std::vector<UnitSteps>& units, const ControlFlow& source,

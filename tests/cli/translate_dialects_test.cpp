@@ -95,13 +95,14 @@ TEST_F(TranslateDialects, ADwellFms3000CannotHoldIsALocatedError) {
                    "of E: 5.5 is not one [GCX081]\n  G4 E0.55\n  ^\n");
 }
 
-TEST_F(TranslateDialects, CoolantFms3000HasNoCodeForIsALocatedError) {
-  write("D.nct", "G0 X1\nM8\nM30\n");
+// NCT's coolant and tool change reach FMS-3000 as the ГОСТ codes its machines take.
+TEST_F(TranslateDialects, NctCoolantAndToolChangeToFms3000AreTheGostCodes) {
+  write("D.nct", "T3 M6\nM8\nG0 X1\nM9\nM30\n");
   const CliResult r = gcx("translate D.nct --to fms3000 -o D.fms");
-  EXPECT_EQ(r.exitCode, 1);
-  EXPECT_FALSE(fs::exists(dir_ / "D.fms"));
-  EXPECT_EQ(r.err, "D.nct:2:1: error: FMS-3000 has no M code for flood coolant (its coolant is "
-                   "machine-specific) [GCX080]\n  M8\n  ^\n");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  const std::string text = read("D.fms");
+  EXPECT_EQ(text.substr(text.find("G90")),
+            "G90 G94 G17\r\nT3 M06\r\nM08\r\nG00 X1 Y0 Z0\r\nM09\r\nM30\r\n");
 }
 
 // The pitch is the travel per turn: half a turn down 5 mm is a pitch of 10 mm.

@@ -82,11 +82,29 @@ TEST_F(TranslateCli, AnUnknownTargetIsRefused) {
             "gcx: error: --to dxf: the targets are canonical, ngc, nct, fms3000, wl4\n");
 }
 
-TEST_F(TranslateCli, TheSameDialectKeepsCyclesAndExpandsTheRest) {
-  write("A.nct", "G90 G0 X0 Y0 Z10\nG99 G81 X5 R2 Z-3 F100\nX10\nG80\nM30\n");
+// To itself a program keeps every structure: it is printed back as written (gcx fmt) and
+// proven; its subprograms stay where they are, called as before (docs/translation.md).
+TEST_F(TranslateCli, TheSameDialectKeepsEveryStructure) {
+  write("A.nct", "G90 G0 X0 Y0 Z10\n#1=0\nWHILE [#1 LT 2] DO1\nG99 G81 X[#1*5] R2 Z-3 F100\n"
+                 "#1=#1+1\nEND1\nG80\nM98 P20\nM30\n");
+  write("O0020.nct", "O20\nG91 G1 X1 F100\nG90\nM99\n");
   const Result r = gcx("translate A.nct --to nct -o B.nct");
   EXPECT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_EQ(readFile(dir_ / "B.nct"), "G90 G0 X0 Y0 Z10\nG99 G81 X5 R2 Z-3 F100\nX10\nG80\nM30\n");
+  EXPECT_EQ(readFile(dir_ / "B.nct"), "G90 G0 X0 Y0 Z10\n#1=0\nWHILE[#1 LT 2] DO1\n"
+                                      "G99 G81 X[#1*5] R2 Z-3 F100\n#1=#1+1\nEND1\nG80\n"
+                                      "M98 P20\nM30\n");
+  EXPECT_EQ(r.err, "gcx: A.nct -> B.nct: verified, moves the tool like the source within 0.001 "
+                   "mm\n");
+}
+
+// --expand subprograms runs the calls out into the blocks they run; cycles stay.
+TEST_F(TranslateCli, TheSameDialectExpandsWhatExpandNames) {
+  write("A.nct", "G90 G0 X0 Y0 Z10\nG99 G81 X5 R2 Z-3 F100\nX10\nG80\nM98 P20\nM30\n");
+  write("O0020.nct", "O20\nG91 G1 X1 F100\nG90\nM99\n");
+  const Result r = gcx("translate A.nct --to nct --expand subprograms -o B.nct");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(readFile(dir_ / "B.nct"),
+            "G90 G0 X0 Y0 Z10\nG99 G81 X5 R2 Z-3 F100\nX10\nG80\nO20\nG91 G1 X1 F100\nG90\nM30\n");
   EXPECT_NE(r.err.find("gcx: note: A.nct: subprograms, loops, variables and modal calls expanded "
                        "into the blocks they run\n"),
             std::string::npos)

@@ -30,6 +30,14 @@ machine::Setup g55() {
   return s;
 }
 
+// The manual leaves M codes other than its own to the machine (001:3720-3721); the machines
+// follow the ГОСТ 20999-83 table (book-reference.md §2.2): M08 coolant on before the block's
+// motion, M09 off after it, M06 changes to the tool T selected. T alone only selects (§3.15).
+TEST(Fms3000Spec_3_15, GostCoolantAndToolChangeCodes) {
+  EXPECT_EQ(motionOf(runBlocks("N1 T7 · N2 X10 M08 · N3 X20 M09 · N4 M06 · M30")),
+            (V{"EV M8", "R 10,0,0", "R 20,0,0", "EV M9", "EV T7 M6"}));
+}
+
 // 001:1549-1558: "NG27X0Y0Z20B0" homes the named axes; the values are ignored, offsets too
 TEST(Fms3000Spec_3_8, G27HomesTheListedAxesToMachineZero) {
   const MacroRun r = runBlocks("G90G55G0X10Y10Z10 · G27X5Z20 · G0X1 · M30", g55());
