@@ -244,6 +244,11 @@ private:
   bool threadOnce(const ir::Word& code);
   /// A WL4 G32/G33 thread move to `to` (thread_motion.cpp, wl4.md §3.6).
   bool threadMove(const BlockWords& w, const Vec3& to, const motion::Extra& extraTo);
+  /// After the block's modal codes: a thread-line sequence that ends here ends with an exact
+  /// stop and G0-G3 (MachineRules::threadSequenceEnds); `ending`: the program ends.
+  bool threadSequenceEnd(const BlockWords& w, bool ending);
+  /// G96 <-> G97 without S in the block (MachineRules::surfaceSpeedSwitchNeedsS).
+  bool surfaceSpeedSwitch(const BlockWords& w, const ModalState& before);
   /// The arc from the current position about `centre` (program coordinates) to `end`.
   bool arcTo(const Vec3& end, const Vec3& centre, bool cw, int turns, const motion::Extra& extraEnd,
              double feed);
@@ -337,6 +342,10 @@ private:
 
   // --- cutter radius compensation (radius_compensation.cpp, docs/compensation.md) ----------
   CompensationStage::Options compensationOptions() const;
+  /// The offset of the tool-centre path: register D's radius (negative swaps the side), or
+  /// with the lathe tool data the selected tool's nose radius plus D, never below 0. Nullopt
+  /// after reporting (no register D, a negative sum).
+  std::optional<double> compensationRadius(const BlockWords& w);
   /// The block's G40/G41/G42, D, plane and look-ahead breakers, handed to the stage.
   bool radiusCompensation(const BlockWords& w, const ModalState& before);
   /// G39 I J K: the corner arc towards the perpendicular of the vector, now.
@@ -360,7 +369,12 @@ private:
   Offsets offsets_;
   Transforms transforms_;
   Vec3 program_ = Vec3::Zero();
-  std::optional<double> threadLead_;     // the lead of the running G32/G33 sequence
+  std::optional<double> threadLead_; // the lead of the running G32/G33 sequence
+  struct ThreadEnd {                 // the last move of an open thread-line sequence
+    SourceRange block;
+    bool exactStop = false;
+  };
+  std::optional<ThreadEnd> threadEnd_;   // (MachineRules::threadSequenceEnds)
   bool probing_ = false;                 // a G38 block's move: its events are kept
   std::vector<motion::Event> probePath_; // to run back along
   ProbeResult probe_;

@@ -93,13 +93,13 @@ TEST(Wl4Threads_3_6, G32IsASynchronisedLineWithFTheLead) {
 }
 
 TEST(Wl4Threads_3_6, FLeadsTheLongerAxisAndAfterTheSequenceANewFActs) {
-  MacroRun r = runWl4("%P\nG18 G90 G0 X0 Z0 S500 M3\nG32 X8 Z-2 F2\nZ-10 F3\nG1 X20 Z-11\n"
-                      "G32 Z-20\nM2\n%\n");
+  MacroRun r = runWl4("%P\nG18 G90 G0 X0 Z0 S500 M3\nG32 X8 Z-2 F2\nZ-10 F3 G9\nG1 X20 Z-11\n"
+                      "G32 Z-20 G9\nG0 X30\nM2\n%\n");
   ASSERT_TRUE(r.errors.empty()) << r.rendered;
   // X travels 8, Z 2: F2 is the lead along X, so Z advances 0.5 per revolution; the F3 of the
   // sequence's second block waits for its end, then feeds G1 and leads the next sequence
   EXPECT_EQ(withThreads(r), (V{"EV S500 M3", "TH 8,0,-2 K0.5", "TH 8,0,-10 K2", "L 20,0,-11 F3",
-                               "TH 20,0,-20 K3", "END"}));
+                               "TH 20,0,-20 K3", "R 30,0,-20", "END"}));
 }
 
 TEST(Wl4Threads_3_6, G33ThreadsOutReversesTheSpindleAndThreadsBack) {
