@@ -94,15 +94,7 @@ bool SystemVariables::writeNamed(const std::string& name, std::optional<int>, co
 }
 
 bool SystemVariables::openCycle(const ir::Block& flat, const ir::Word& code) {
-  const int cycle = static_cast<int>(code.number);
-  if ((cycle == 77 || cycle == 78) && flat.find('P')) {
-    diags_.error(diag::code::NotImplemented, flat.find('P')->range,
-                 fmt::format("G{} with P Q is the internal contour cycle: not supported yet "
-                             "(wl4.md §5.6)",
-                             cycle));
-    return false;
-  }
-  last_[108] = cycle;
+  last_[108] = static_cast<int>(code.number);
   takeTarget(flat);
   // G31's I and P: omitted means 0 (002:2539-2541), not an earlier block's value (§10.11)
   const ir::Word* i = flat.find('I');
@@ -113,6 +105,9 @@ bool SystemVariables::openCycle(const ir::Block& flat, const ir::Word& code) {
 }
 
 void SystemVariables::blockRuns(const ir::Block& flat) {
+  for (const ir::Word& w : flat.words) // the internal cycles are group #108's too (§2.2, §5.6)
+    if (w.is('G') && (w.number == 76 || ((w.number == 77 || w.number == 78) && flat.find('P'))))
+      last_[108] = w.number;
   const char* centres = "IJK";
   for (int a = 0; a < 3; ++a)
     if (const ir::Word* w = flat.find(centres[a])) last_[136 + a] = w->number;

@@ -317,8 +317,9 @@ bool Interpreter::executeBlock(const ir::Block& block) {
   for (const ir::Word* o : w.other)
     if (o->is('O')) state_.lastO = static_cast<int>(o->number);
   const ModalState before = state_;
-  pendingTurning_ = nullptr;
+  pendingTurning_ = pendingContour_ = nullptr;
   if (!applyModal(w)) return false;
+  if (pendingContour_ && !contourCycleSide(w, before)) return false;
   if (!threadSequenceEnd(w, false) || !surfaceSpeedSwitch(w, before)) return false;
   if (profile_.machine.surfaceSpeedHoldsCurrent && state_.surfaceSpeed && !before.surfaceSpeed &&
       !w.s) // the surface speed the spindle has now at the tool's radius
@@ -341,6 +342,7 @@ bool Interpreter::executeBlock(const ir::Block& block) {
   if (!beforeMotion(w)) return false;
   if (state_.cycle == GAction::DrillCycle && !deferCycles_) return drillBlock(w, consumed);
   if (pendingTurning_) return turningBlock(w);
+  if (pendingContour_) return contourCycleBlock(w, before);
   const bool arcWithCentreOnly =
       (state_.motion == GAction::ArcCW || state_.motion == GAction::ArcCCW) &&
       (w.ijk[0] || w.ijk[1] || w.ijk[2] || (w.r && profile_.machine.strictArcRadius));
@@ -534,6 +536,9 @@ bool Interpreter::applyModal(const BlockWords& w) {
       break; // radiusCompensation()
     case GAction::DrillCycle:
       state_.cycle = g->action; // drillBlock() stores the block's data and drills
+      break;
+    case GAction::ContourCycle:
+      if (!deferCycles_) pendingContour_ = g; // contourCycleBlock() runs it
       break;
     case GAction::TurningCycle:
       if (deferCycles_) break;

@@ -313,13 +313,21 @@ private:
   /// The blocks ns..nf named by the block's P and Q, checked against §4.7; false if reported.
   bool contourBlocks(const BlockWords& w, std::vector<ContourBlock>& out);
   /// The contour's moves as a scratch copy of this interpreter makes them, in program
-  /// coordinates; G40-G42 are left out (roughing ignores them, Q-14).
+  /// coordinates; G40-G42 are left out (roughing ignores them, Q-14). The copy starts where
+  /// this one stands, or at `start` (program coordinates).
   bool traceContour(const std::vector<ContourBlock>& blocks,
-                    std::vector<cycles::ContourSegment>& out);
+                    std::vector<cycles::ContourSegment>& out, const Vec3* start = nullptr);
   /// A turning-cycle block: stores a first block's values or runs the cycle (G71.7-G79.7).
   bool turningCycle(cycles::TurningCycle cycle, const BlockWords& w);
   /// The block's words for the turning library: raw values in mm, diameters not halved.
   cycles::TurningWords turningWords(cycles::TurningCycle cycle, const BlockWords& w) const;
+  // --- contour cycles (contour_cycles.cpp, wl4.md §5.6) --------------------------------------
+  /// The block's G41/G42 belong to the cycle (pendingContour_): they give contourSide_ and
+  /// leave compensation off; it must be off before the block. False if reported.
+  bool contourCycleSide(const BlockWords& w, const ModalState& before);
+  /// A block with a contour cycle: trace the contour P..Q from the block's start point, apply
+  /// the allowances, run the passes; F acts only inside the cycle.
+  bool contourCycleBlock(const BlockWords& w, const ModalState& before);
   Vec3 toProgram(const Vec3& machine) const {
     return transforms_.applyInverse(machine - workOrigin());
   }
@@ -394,7 +402,9 @@ private:
   CompensationStage comp_;     // between the programmed path and the sink
   ContourSource contours_;
   std::optional<std::int64_t> resumeAfter_;
-  const GCodeSpec* pendingTurning_ = nullptr;    // a one-shot turning cycle in the current block
+  const GCodeSpec* pendingTurning_ = nullptr; // a one-shot turning cycle in the current block
+  const GCodeSpec* pendingContour_ = nullptr; // a contour cycle in the current block
+  int contourSide_ = 0; // its G41 (+1) / G42 (-1): allowance side and compensation in the cycle
   std::optional<cycles::LevelCycle> levelCycle_; // the level cycle whose words are kept
   std::string levelCode_;                        // its code as written, for messages: "G81"
   std::map<char, double> levelWords_;            // its parameters, remembered until G80 or another

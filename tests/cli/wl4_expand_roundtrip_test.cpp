@@ -71,6 +71,23 @@ TEST_F(Wl4ExpandRoundTrip, VectorsOnTheirSetupsAndTheManualsExamples) {
   }
 }
 
+TEST_F(Wl4ExpandRoundTrip, AContourCycleKeptWithoutItsContourIsAnErrorNotAWrongProgram) {
+  // expand keeps a machine cycle as its block; the contour P..Q after M2 is never reached, so
+  // the flattened text would lose it: GCX042 at the cycle (`translate --to wl4` keeps it all)
+  for (const Wl4ProgramOnSetup& p : wl4ContourCyclePrograms()) {
+    write(p.name + ".wl4", p.text);
+    write(p.name + ".setup.json", p.setup);
+    const CliResult e =
+        gcx(fmt::format("expand {0}.wl4 --to wl4 -o expanded.wl4 --setup {0}.setup.json", p.name));
+    EXPECT_EQ(e.exitCode, 1) << p.name << "\n" << e.err;
+    EXPECT_NE(e.err.find("[GCX042]"), std::string::npos) << p.name << "\n" << e.err;
+    EXPECT_FALSE(fs::exists(folder_.path() / "expanded.wl4")) << p.name; // no partial output
+    const CliResult c =
+        gcx(fmt::format("expand {0}.wl4 --to canonical --setup {0}.setup.json", p.name));
+    EXPECT_EQ(c.exitCode, 0) << p.name << "\n" << c.err;
+  }
+}
+
 TEST_F(Wl4ExpandRoundTrip, AKoi8rFileAndItsUtf8TwinGiveIdenticalResults) {
   // "$ ДЕТАЛЬ ВАЛ" in KOI8-R bytes and in UTF-8: comments are the only place for Cyrillic (§1.1)
   const std::string koi8 = "%P\n$ \xE4\xE5\xF4\xE1\xEC\xF8 \xF7\xE1\xEC\nG0 X10 Y5\n"

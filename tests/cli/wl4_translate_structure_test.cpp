@@ -72,6 +72,18 @@ TEST_F(Wl4TranslateStructure, LatheVectorsOnTheirSetup) {
   }
 }
 
+TEST_F(Wl4TranslateStructure, ContourCyclesOnTheLathe) {
+  // the manual's examples 21-23 and the spec's worked example (§5.6): the cycle blocks and their
+  // contours after M2 come back as written, and the translation moves the tool as they do
+  for (const Wl4ProgramOnSetup& p : wl4ContourCyclePrograms()) {
+    folder_.write(p.name + ".wl4", p.text);
+    folder_.write(p.name + ".setup.json", p.setup);
+    const std::string kept = translate(p.name + ".wl4", " --setup " + p.name + ".setup.json");
+    keeps(p.text, kept, p.name);
+    EXPECT_NE(kept.find("M2\nN"), std::string::npos) << kept; // the contour after M2
+  }
+}
+
 TEST_F(Wl4TranslateStructure, TheKeptTextIsTheProgramAsWritten) {
   folder_.write("p.wl4", "%P\n#1=0\nN010 #1=(#1+1) G1 X(#1*10) F100\nIF (#1<3) N10\nL0702\n"
                          "M2\n%\n%07\nG91 G1 Y#1\nG90 M99\n%\n");
