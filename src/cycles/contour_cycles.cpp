@@ -2,7 +2,6 @@
 // contour, approach passes, the finishing pass.
 #include "cycles/contour_cycles.h"
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -22,29 +21,6 @@ double sign(double v) {
 
 const char* axisName(int axis) {
   return axis == 0 ? "Z (P1)" : "X (P2)";
-}
-
-/// Consecutive feeds along one line at one feed become one move: the cut to a contour that
-/// runs on along the same line is one G1 (the spec's worked example).
-void mergeCollinear(std::vector<CycleOp>& ops, const Vec3& start) {
-  std::vector<CycleOp> out;
-  Vec3 at = start, before = start;
-  for (const CycleOp& op : ops) {
-    if (!out.empty() && op.kind == OpKind::Feed && out.back().kind == OpKind::Feed &&
-        op.feed == out.back().feed && op.step == out.back().step) {
-      const Vec3 u = at - before, v = op.to - at;
-      if (u.cross(v).norm() <= 1e-9 * u.norm() * v.norm() && u.dot(v) > 0) {
-        out.back().to = op.to;
-        at = op.to;
-        continue;
-      }
-    }
-    out.push_back(op);
-    if (op.kind == OpKind::Rapid || op.kind == OpKind::Feed || op.kind == OpKind::ArcCW ||
-        op.kind == OpKind::ArcCCW)
-      before = at, at = op.to;
-  }
-  ops = std::move(out);
 }
 
 /// The contour must be monotonic along the cut axis (the manual's one condition; it may turn
@@ -90,7 +66,7 @@ public:
     if (ahead(start, end)) at.push_back(end);
     std::sort(at.begin(), at.end(), [&](double a, double b) { return cutSign_ * (b - a) > 0; });
     std::vector<std::pair<double, double>> out;
-    for (std::size_t i = 0; i + 1 < at.size(); ++i) {
+    for (std::size_t i = 0; i + 1 < at.size(); ++i) { // touching stretches are one (one G1)
       if (!ahead(at[i], at[i + 1]) || !outside((at[i] + at[i + 1]) / 2)) continue;
       if (!out.empty() && std::abs(out.back().second - at[i]) < kTol)
         out.back().second = at[i + 1];
@@ -238,7 +214,6 @@ std::optional<std::vector<CycleOp>> expandContourCycle(const ContourCycleRequest
   } else if (!levels(req, path, diags)) {
     return std::nullopt;
   }
-  mergeCollinear(path.ops(), req.start);
   return std::move(path.ops());
 }
 
