@@ -120,8 +120,11 @@ void SystemVariables::blockRuns(const ir::Block& flat) {
 void SystemVariables::takeTarget(const ir::Block& flat) {
   machine::Vec3 at = machine_.programPosition();
   bool incremental = machine_.state().incremental;
-  for (const ir::Word& w : flat.words) // the block's own G90/G91 counts for its words
+  bool allowances = false; // G76's U W are its initial allowance, no increments (§5.6)
+  for (const ir::Word& w : flat.words) { // the block's own G90/G91 counts for its words
     if (w.is('G') && (w.number == 90 || w.number == 91)) incremental = w.number == 91;
+    if (w.is('G') && w.number == 76) allowances = true;
+  }
   if (machine_.state().diameterAxes & 1u) at[0] *= 2; // #130/#131 as the X words: diameters
   const char* absolute = "XYZ";
   const char* relative = "UVW";
@@ -129,7 +132,7 @@ void SystemVariables::takeTarget(const ir::Block& flat) {
     double target = at[a];
     if (const ir::Word* w = flat.find(absolute[a]))
       target = incremental ? at[a] + w->number : w->number;
-    if (const ir::Word* w = flat.find(relative[a])) target = at[a] + w->number;
+    if (const ir::Word* w = flat.find(relative[a]); w && !allowances) target = at[a] + w->number;
     last_[130 + 2 * a] = target;         // #130 #132 #134: the target
     last_[131 + 2 * a] = target - at[a]; // #131 #133 #135: the increment from here
   }

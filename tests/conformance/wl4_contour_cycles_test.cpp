@@ -138,6 +138,19 @@ TEST(Wl4ContourCycles_5_6, G76PassesApproachTheContourByTheInitialAllowance) {
                            "L 20,0,-30 F0.2", "L 25,0,-30 F0.2", "R 25,0,2", "END"}));
 }
 
+TEST(Wl4ContourCycles_5_6, TheCycleBlockGivesItsStartPointTo130To135) {
+  // #130 #131: X of P and its increment from A, diameters; G76's U is an allowance, no move
+  MacroRun r = runWl4("%P\nG18 G90 G0 X50 Z2\nG76 G1 X30 Z0 P200 Q202 U2 E2 F0.2\n"
+                      "#1=#130 #2=#131 #3=#134 #4=#135\nG0 X#1 Z#2\nG0 X#3 Z#4\nM2\n"
+                      "N200 G1 Z-20\nN201 X40 Z-30\nN202 X50\n%\n",
+                      wl4Lathe());
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  const V m = r.motion();
+  ASSERT_GE(m.size(), 3u);
+  // X30 (radius 15) Z-20; then X0 (#134 = 0) Z-2 (#135 = 0 - 2)
+  EXPECT_EQ(V(m.end() - 3, m.end()), (V{"R 15,0,-20", "R 0,0,-2", "END"}));
+}
+
 TEST(Wl4ContourCycles_5_6, G76FinishingWithTheToolsNoseRadiusUnderG42) {
   // no E: one pass; G42 with tool 1's nose radius 0.4 and corrector D2 = 0.1: the nose centre
   // runs 0.5 right of the contour X30 -> Z-20 -> X50 (as the R0.5 test above)
