@@ -157,5 +157,18 @@ TEST(Wl4OpenCycles_5_5, G31WithAFlankInfeedShiftsEachPassStart) {
             (V{"3.268", "3.124", "2.979", "2.835", "2.763", "2.727", "2.709", "2.691", "2.691"}));
 }
 
+TEST(Wl4OpenCycles_5_5, G31WithATaperWidensAnExternalThreadTowardItsEnd) {
+  // worked by hand through §5.4 (its restored signs: #18 = -1 outside, #14 = #20 - #22*#18):
+  // #3 = 1 on the diameter over the 25 mm from A's Z to the end, no run-out; #1 = 0 leaves the
+  // zero-cut pass and the spring pass, each from X24 at Z5 to X25 at Z-20
+  MacroRun r = runWl4("%P\nG18 G90\nG0 X30 Z5\n"
+                      "G31 X24 Z-20 F1.5 P0 I0 #1=0 #2=0.25 #3=1 #4=0 #5=0\nM2\n%\n",
+                      lathe());
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(withThreads(r),
+            (V{"R 15,0,5", "R 12,0,5", "TH 12.5,0,-20 K1.5", "R 15,0,-20", "R 15,0,5", "R 12,0,5",
+               "TH 12.5,0,-20 K1.5", "R 15,0,-20", "R 15,0,5", "END"}));
+}
+
 } // namespace
 } // namespace gcx::test
