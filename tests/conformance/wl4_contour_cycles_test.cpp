@@ -179,9 +179,10 @@ TEST(Wl4ContourCycles_5_6, CompensationIsOffAfterTheCycle) {
   // #102 reads G40 again, #108 the cycle (§2.2)
   machine::Setup s = wl4Lathe();
   s.tools[2].radius = 1;
-  MacroRun r = runWl4("%P\nG18 G90 D2 G0 X50 Z2\nG77 P200 Q201 G42 G1 X30 Z0 F0.1\n"
-                      "G1 X60 Z5 F0.2\n#1=#102 #2=#108\nG0 X#1 Z#2\nM2\nN200 G1 Z-20\nN201 X50\n%\n",
-                      s);
+  MacroRun r =
+      runWl4("%P\nG18 G90 D2 G0 X50 Z2\nG77 P200 Q201 G42 G1 X30 Z0 F0.1\n"
+             "G1 X60 Z5 F0.2\n#1=#102 #2=#108\nG0 X#1 Z#2\nM2\nN200 G1 Z-20\nN201 X50\n%\n",
+             s);
   ASSERT_TRUE(r.errors.empty()) << r.rendered;
   EXPECT_EQ(r.motion(), (V{"R 25,0,2", "L 16,0,0 F0.1", "L 16,0,-19 F0.1", "L 25,0,-19 F0.1",
                            "R 25,0,2", "L 30,0,5 F0.2", "R 20,0,77", "END"}));
