@@ -7,6 +7,9 @@
 namespace gcx::wl4 {
 
 bool checkBlockRules(const ir::Block& b, diag::Engine& diags) {
+  // in a G76 block U W are the initial allowance, not increments (§5.6, 002:2918-2919)
+  for (const ir::Word& w : b.words)
+    if (w.is('G') && w.isLiteral() && w.number == 76) return true;
   const char* absolute = "XYZ";
   const char* relative = "UVW";
   for (int a = 0; a < 3; ++a) {

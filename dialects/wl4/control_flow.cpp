@@ -36,7 +36,8 @@ RemapTable remaps() {
   }
   // G31, G70-G75, G77, G78: the block's axis words are the target of system program %1, which
   // does all the moving, dispatched on #108 (§5.1, §5.3); G79 too, for which %1 has no section:
-  // it stops with "UNKNOWN CYCLE IN RANGE G70-G79"
+  // it stops with "UNKNOWN CYCLE IN RANGE G70-G79". G77/G78 with P are the internal contour
+  // cycles the machine runs (the profile's G-code table, §5.6)
   for (int g : {31, 70, 71, 72, 73, 74, 75, 77, 78, 79}) {
     Remap open;
     open.address = "G";
@@ -46,6 +47,7 @@ RemapTable remaps() {
     open.fixedProgram = "1";
     open.frame = LocalFrame::Copy;
     open.cycleWords = "IP"; // G31: lead increment and phase (#136, #140)
+    if (g == 77 || g == 78) open.unlessWord = 'P';
     open.spec = "wl4.md §5.1";
     t.rows.push_back(open);
   }

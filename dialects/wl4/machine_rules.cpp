@@ -48,6 +48,13 @@ MachineRules machineRules() {
   // no numbered parameters: the manual gives none (§0.2); arc_tolerance is gcx's setting
   r.mcodes = mcodes();
   r.speedTiming = r.toolTiming = MTiming::BeforeMotion;
+  // T moves the zero by its working point's offsets and brings its nose radius Rt, which adds
+  // to corrector D (§4.1, 002:1268-1328, 1547-1577)
+  r.toolSelectsOffsets = true;
+  // "switching G97 to G96 or back without a new S in the same block is not allowed" (§2.4,
+  // 002:1265-1267, 1534-1536); a G32 sequence ends with G9 and G0-G3 (§3.6, 002:789-793)
+  r.surfaceSpeedSwitchNeedsS = true;
+  r.threadSequenceEnds = true;
   r.skipSense = SkipSense::RunWhenOn; // `/` blocks run only with the flag set (§1.7)
   // G4 E<seconds> (002:979); the cycle texts write G4 X (§10 item 5): both read as seconds
   r.dwell = {'E', 1, "G4 without E (seconds)", 0, "", 'X'};

@@ -1,5 +1,6 @@
 #include "dialects/wl4/profile.h"
 
+#include "cycles/contour_cycles.h"
 #include "dialects/wl4/control_flow.h"
 #include "dialects/wl4/machine_rules.h"
 
@@ -48,6 +49,8 @@ Profile build() {
   // Table 3 (wl4.md §2.1); code x10, group, meaning, action. Codes gcx does not execute yet
   // are Unsupported: reported where they run, never ignored.
   using A = GAction;
+  using C = cycles::ContourCycle;
+  auto contour = [](C c) { return static_cast<int>(c); };
   p.gcodes = {
       {0, 1, "rapid positioning", A::Rapid},
       {10, 1, "linear interpolation", A::Linear},
@@ -66,9 +69,11 @@ Profile build() {
       {730, 0, "deep drilling cycle (%1)"},
       {740, 0, "face grooving cycle (%1)"},
       {750, 0, "grooving cycle (%1)"},
-      {760, 0, "universal approximation cycle"},
-      {770, 0, "longitudinal roughing cycle"},
-      {780, 0, "transverse roughing cycle"},
+      // the internal contour cycles (§5.6): G76, and G77/G78 with P (without P the control-flow
+      // engine calls %1 and the machine never sees them)
+      {760, 0, "universal approximation cycle", A::ContourCycle, contour(C::Approach)},
+      {770, 0, "longitudinal contour cycle", A::ContourCycle, contour(C::Longitudinal)},
+      {780, 0, "transverse contour cycle", A::ContourCycle, contour(C::Transverse)},
       {790, 0, "reserved cycle (%1)"},
       {360, 0, "return to machine zero", A::ReferenceReturn}, // values ignored (§3.7)
       {380, 0, "probing move", A::ProbeReturn},               // no touch assumed (§3.8)
@@ -119,6 +124,10 @@ Profile build() {
   p.maxMCodesPerBlock = 6; // three at the start and three at the end of a block (§2.3)
   p.maxSkipLevel = 1;
   p.documentedSkipLevel = 1;
+  // a G77/G78 contour has at most 200 blocks; F S T M in it are ignored (§5.6, 002:3069-3075,
+  // 3108-3110)
+  p.cycleChoices.maxContourBlocks = 200;
+  p.cycleChoices.contourIgnoredWords = "FSTM";
   p.machine = machineRules();
   p.controlFlow = &controlFlow();
   p.index();

@@ -94,15 +94,7 @@ bool SystemVariables::writeNamed(const std::string& name, std::optional<int>, co
 }
 
 bool SystemVariables::openCycle(const ir::Block& flat, const ir::Word& code) {
-  const int cycle = static_cast<int>(code.number);
-  if ((cycle == 77 || cycle == 78) && flat.find('P')) {
-    diags_.error(diag::code::NotImplemented, flat.find('P')->range,
-                 fmt::format("G{} with P Q is the internal contour cycle: not supported yet "
-                             "(wl4.md §5.6)",
-                             cycle));
-    return false;
-  }
-  last_[108] = cycle;
+  last_[108] = static_cast<int>(code.number);
   takeTarget(flat);
   // G31's I and P: omitted means 0 (002:2539-2541), not an earlier block's value (§10.11)
   const ir::Word* i = flat.find('I');
@@ -113,6 +105,9 @@ bool SystemVariables::openCycle(const ir::Block& flat, const ir::Word& code) {
 }
 
 void SystemVariables::blockRuns(const ir::Block& flat) {
+  for (const ir::Word& w : flat.words) // the internal cycles are group #108's too (§2.2, §5.6)
+    if (w.is('G') && (w.number == 76 || ((w.number == 77 || w.number == 78) && flat.find('P'))))
+      last_[108] = w.number;
   const char* centres = "IJK";
   for (int a = 0; a < 3; ++a)
     if (const ir::Word* w = flat.find(centres[a])) last_[136 + a] = w->number;
@@ -125,8 +120,11 @@ void SystemVariables::blockRuns(const ir::Block& flat) {
 void SystemVariables::takeTarget(const ir::Block& flat) {
   machine::Vec3 at = machine_.programPosition();
   bool incremental = machine_.state().incremental;
-  for (const ir::Word& w : flat.words) // the block's own G90/G91 counts for its words
+  bool allowances = false; // G76's U W are its initial allowance, no increments (§5.6)
+  for (const ir::Word& w : flat.words) { // the block's own G90/G91 counts for its words
     if (w.is('G') && (w.number == 90 || w.number == 91)) incremental = w.number == 91;
+    if (w.is('G') && w.number == 76) allowances = true;
+  }
   if (machine_.state().diameterAxes & 1u) at[0] *= 2; // #130/#131 as the X words: diameters
   const char* absolute = "XYZ";
   const char* relative = "UVW";
@@ -134,7 +132,7 @@ void SystemVariables::takeTarget(const ir::Block& flat) {
     double target = at[a];
     if (const ir::Word* w = flat.find(absolute[a]))
       target = incremental ? at[a] + w->number : w->number;
-    if (const ir::Word* w = flat.find(relative[a])) target = at[a] + w->number;
+    if (const ir::Word* w = flat.find(relative[a]); w && !allowances) target = at[a] + w->number;
     last_[130 + 2 * a] = target;         // #130 #132 #134: the target
     last_[131 + 2 * a] = target - at[a]; // #131 #133 #135: the increment from here
   }

@@ -1,7 +1,7 @@
 // The WL4 system variables #100 and up (wl4.md §2.2, §6.2): read-only, answered from the
 // machine model, and the words of the last blocks: #130-#135 the target and increments of the
 // last block with axis words (an open cycle's block included: the control hands them to %1,
-// §5.1), #136-#138 the last I J K, #140 the last P, #108 the last open cycle.
+// §5.1), #136-#138 the last I J K, #140 the last P, #108 the last open or contour cycle.
 #pragma once
 #include <map>
 
@@ -29,7 +29,8 @@ public:
   void startMain(const std::string&) override {}
   /// #108 the cycle, #130-#135 its target and increments, #136 I, #140 P (§5.1).
   bool openCycle(const ir::Block& flat, const ir::Word& code) override;
-  /// #130-#135 for a block with axis words that move, #136-#138 I J K, #140 P (§6.2).
+  /// #130-#135 for a block with axis words that move, #136-#138 I J K, #140 P (§6.2); #108
+  /// for a contour cycle (G76, G77/G78 with P, §5.6).
   void blockRuns(const ir::Block& flat) override;
 
 private:

@@ -36,7 +36,7 @@ Expander::CodeMatch Expander::match(const ir::Word& w, const ir::Block& flat) co
   CodeMatch m;
   if (w.kind != ir::ValueKind::Number || !flow_.remaps.mayMatch(w.address)) return m;
   const Remap* row = flow_.remaps.find(w.address, w.number);
-  if (!row) return m;
+  if (!row || (row->unlessWord && flat.find(row->unlessWord))) return m;
   if (row->parameterCode)
     for (const ir::Word& x : flat.words) {
       if (&x == &w) break;

@@ -1,6 +1,7 @@
 // Contour checks and geometry for the contour cycles (cycles.md §4.7-§4.10).
 #include "cycles/contour.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <numbers>
@@ -189,6 +190,138 @@ std::optional<double> firstCrossing(const Profile& p, const RoughFrame& f, doubl
 
 bool turnsBackAlong(const ProfileSegment& s, int axis) {
   return isArc(s.kind) && arcTurnsBack(s, axis);
+}
+
+namespace {
+
+bool holds(const ProfileSegment& s, const Vec2& q) {
+  if (isArc(s.kind)) return std::abs((q - s.center).norm() - radius(s)) < kTol && onArc(s, q);
+  const Vec2 d = s.to - s.from;
+  const double len2 = d.squaredNorm();
+  const double t = len2 > 0 ? std::clamp((q - s.from).dot(d) / len2, 0.0, 1.0) : 0.0;
+  return (s.from + t * d - q).norm() < kTol;
+}
+
+/// Where segment s, run from `at` (on it), first has coordinate `axis` = `until`.
+std::optional<Vec2> reaches(const ProfileSegment& s, const Vec2& at, int axis, double until) {
+  if (!isArc(s.kind)) {
+    const double d = s.to[axis] - at[axis];
+    if (std::abs(d) < kZeroLength) return std::nullopt;
+    const double t = (until - at[axis]) / d;
+    if (t < -1e-12 || t > 1 + 1e-12) return std::nullopt;
+    return Vec2(at + std::clamp(t, 0.0, 1.0) * (s.to - at));
+  }
+  std::vector<double> others;
+  crossings(s, axis, until, others);
+  ProfileSegment rest = s;
+  rest.from = at;
+  const double whole = turnTo(rest, s.to);
+  std::optional<Vec2> best;
+  double first = kTwoPi;
+  for (double b : others) {
+    Vec2 q;
+    q[axis] = until, q[1 - axis] = b;
+    const double t = turnTo(rest, q);
+    if (t <= whole + 1e-12 && t < first) first = t, best = q;
+  }
+  return best;
+}
+
+} // namespace
+
+void followProfileUntil(const Profile& p, const Vec2& from, int axis, double until,
+                        TurningPath& path, double f) {
+  std::size_t i = 0;
+  while (i < p.segments.size() && !holds(p.segments[i], from))
+    ++i;
+  Vec2 at = from;
+  for (; i < p.segments.size(); ++i) {
+    const ProfileSegment& s = p.segments[i];
+    if ((s.to - at).norm() < kTol) { // at its end already (a crossing found numerically)
+      at = s.to;
+      continue;
+    }
+    const auto stop = reaches(s, at, axis, until);
+    const Vec2 to = stop ? *stop : s.to;
+    if (isArc(s.kind))
+      path.arc(s.kind, to, s.center, f);
+    else
+      path.feed(to, f);
+    if (stop) return;
+    at = s.to;
+  }
+}
+
+double followOut(const Profile& p, const Vec2& from, int axis, double s, double level, double until,
+                 TurningPath& path, double f) {
+  std::size_t i = 0;
+  while (i < p.segments.size() && !holds(p.segments[i], from))
+    ++i;
+  Vec2 at = from;
+  double shallowest = from[axis];
+  auto note = [&](const Vec2& q) {
+    if (s * (q[axis] - shallowest) < 0) shallowest = q[axis];
+  };
+  for (; i < p.segments.size(); ++i) {
+    const ProfileSegment& seg = p.segments[i];
+    if ((seg.to - at).norm() < kTol) { // at its end already (a crossing found numerically)
+      at = seg.to;
+      continue;
+    }
+    // the first of: back at `until`; deeper than `level` (a zone this level cuts apart)
+    ProfileSegment rest = seg;
+    rest.from = at;
+    auto along = [&](const Vec2& q) { // how far along the rest of the segment q lies
+      return isArc(seg.kind) ? turnTo(rest, q) : (q - at).norm();
+    };
+    std::optional<Vec2> stop = reaches(seg, at, axis, until);
+    if (const auto deeper = reaches(seg, at, axis, level + s * kTol);
+        deeper && (!stop || along(*deeper) < along(*stop)))
+      stop = deeper;
+    const Vec2 to = stop ? *stop : seg.to;
+    if (isArc(seg.kind)) {
+      for (int q = axis; q < 4; q += 2) { // the arc's own extremes along `axis` on the way
+        const double th = q * std::numbers::pi / 2;
+        const Vec2 turn = seg.center + radius(seg) * Vec2(std::cos(th), std::sin(th));
+        if (along(turn) > 1e-12 && along(turn) < along(to)) note(turn);
+      }
+      path.arc(seg.kind, to, seg.center, f);
+    } else {
+      path.feed(to, f);
+    }
+    note(to);
+    if (stop) break;
+    at = seg.to;
+  }
+  return shallowest;
+}
+
+std::vector<double> crossingsAt(const Profile& p, int level, double v) {
+  std::vector<double> out;
+  for (const ProfileSegment& s : p.segments)
+    crossings(s, level, v, out);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end(),
+                        [](double a, double b) { return std::abs(a - b) < kTol; }),
+            out.end());
+  return out;
+}
+
+double extremeAlong(const Profile& p, int axis, double s) {
+  double v = p.aPrime[axis];
+  auto take = [&](double x) {
+    if (s * (x - v) > 0) v = x;
+  };
+  for (const ProfileSegment& seg : p.segments) {
+    take(seg.from[axis]), take(seg.to[axis]);
+    if (!isArc(seg.kind)) continue;
+    for (int q = axis; q < 4; q += 2) {
+      const double th = q * std::numbers::pi / 2;
+      const Vec2 turn = seg.center + radius(seg) * Vec2(std::cos(th), std::sin(th));
+      if (onArc(seg, turn)) take(turn[axis]);
+    }
+  }
+  return v;
 }
 
 void followProfile(const Profile& p, TurningPath& path, double f) {

@@ -69,4 +69,22 @@ bool turnsBackAlong(const ProfileSegment& s, int axis);
 /// Runs A' -> B at feed f: lines as G1, arcs as G2/G3 with their centres.
 void followProfile(const Profile& p, TurningPath& path, double f);
 
+/// Runs the profile at feed f from `from` (a point on it: from the first segment holding it)
+/// in its direction until lathe coordinate `axis` reaches `until` (the segment is cut there),
+/// or to its end B.
+void followProfileUntil(const Profile& p, const Vec2& from, int axis, double until,
+                        TurningPath& path, double f);
+/// A roughing pass's way out of a level along the profile (WL4 G77/G78): as
+/// followProfileUntil, and it also stops where the profile goes deeper (toward `s` along
+/// `axis`) than `level`, the level being cut (a zone that level cuts apart). Returns the
+/// shallowest coordinate the way reached: a retract along the other axis there is clear.
+double followOut(const Profile& p, const Vec2& from, int axis, double s, double level, double until,
+                 TurningPath& path, double f);
+
+/// Every point where the line {lathe coordinate `level` = v} meets the profile: their other
+/// coordinate, sorted, without repeats.
+std::vector<double> crossingsAt(const Profile& p, int level, double v);
+/// The extreme of the profile along `axis` toward s: vertices, and arcs where they turn.
+double extremeAlong(const Profile& p, int axis, double s);
+
 } // namespace gcx::cycles

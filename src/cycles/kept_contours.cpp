@@ -21,8 +21,9 @@ std::optional<KeptContours::Cycle> KeptContours::cycleOf(const ir::Block& b) con
   for (const ir::Word& w : b.words) {
     if (!w.is('G') || !w.isLiteral()) continue;
     const GCodeSpec* g = profile_.gcode(w.number);
-    if (!g || g->action != GAction::TurningCycle) continue;
-    if (static_cast<TurningCycle>(g->arg) <= TurningCycle::PatternRepeat) // the profile's binding
+    if (!g || (g->action != GAction::TurningCycle && g->action != GAction::ContourCycle)) continue;
+    if (g->action == GAction::ContourCycle || // the profile's binding
+        static_cast<TurningCycle>(g->arg) <= TurningCycle::PatternRepeat)
       return Cycle{static_cast<std::int64_t>(p->number), static_cast<std::int64_t>(q->number),
                    w.range};
   }

@@ -1,4 +1,5 @@
-// `--keep cycles` for the turning contour cycles G70.7-G73.7: a kept cycle names its contour by
+// `--keep cycles` for the turning contour cycles G70.7-G73.7 and the contour cycles
+// (GAction::ContourCycle, WL4 G76-G78 P Q): a kept cycle names its contour by
 // block numbers (P ns, Q nf), so the flattened text must still hold those blocks, with their
 // numbers, once and in order. This keeps the numbers that are referenced and reports a kept
 // cycle whose contour did not survive flattening (it lay after the program end, or a loop

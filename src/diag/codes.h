@@ -64,6 +64,10 @@ inline constexpr const char* CompRadiusTooLarge = "GCX070"; // tool radius >= an
 inline constexpr const char* CompPlaneChange = "GCX071";    // G17/G18/G19 while compensating
 inline constexpr const char* CompStartInArc = "GCX072";     // G41/G42 start-up in G2/G3
 inline constexpr const char* CompNoRegister = "GCX073";     // D names no radius register
+inline constexpr const char* CompNegativeRadius = "GCX090"; // nose radius + D below 0 (WL4)
+inline constexpr const char* ThreadSequenceOpen = "GCX091"; // a G32 sequence not ended by G0-G3
+inline constexpr const char* ThreadSequenceNoStop = "GCXW26";       // its last move without G9
+inline constexpr const char* SurfaceSpeedSwitchWithoutS = "GCX092"; // G96<->G97 without S
 // --- machine: automatic contour geometry (nct.md §4)
 inline constexpr const char* ChamferAndRounding = "2082"; // ,C and ,R in one block
 inline constexpr const char* IllegalChamfer = "2085";     // no plane element before or after

@@ -102,6 +102,9 @@ struct Remap {
   /// CallOpenCycle: letters besides the axes that belong to the cycle, not to the block's NC
   /// part (WL4 G31: I the lead increment, P the phase).
   std::string cycleWords;
+  /// The row does not apply to a block that has this word (0: always applies): WL4 G77 with P
+  /// is the internal contour cycle the machine runs, without P the open cycle of %1 (§5.1).
+  char unlessWord = 0;
   const char* spec = ""; // where the dialect specifies the row, for messages
 };
 

@@ -187,6 +187,11 @@ struct MachineRules {
   std::vector<MCodeSpec> mcodes;
   MTiming speedTiming = MTiming::AfterMotion; // S (and G96's surface speed)
   MTiming toolTiming = MTiming::AfterMotion;  // T selects the next tool
+  /// Lathe tool data (WL4, wl4.md §4.1): T makes the tool's working-point offsets (the setup's
+  /// `turning` of tool T) move the program zero, T0 clears them; the compensation radius is
+  /// the tool's nose radius (`nose_radius`) plus the value of register D, which may be
+  /// negative, but not below 0 in sum (an error, not a change of side).
+  bool toolSelectsOffsets = false;
   SkipSense skipSense = SkipSense::SkipWhenOn;
   DwellRule dwell;
   TransformWords transform;
@@ -219,6 +224,12 @@ struct MachineRules {
   /// Constant surface speed selected without S holds the surface speed the spindle has at that
   /// moment (its rpm at the tool's radius), not the last one programmed.
   bool surfaceSpeedHoldsCurrent = false;
+  /// Switching between rpm and constant surface speed needs a new S in the same block (an
+  /// error without one; WL4, wl4.md §2.4).
+  bool surfaceSpeedSwitchNeedsS = false;
+  /// A sequence of spindle-synchronised lines (GAction::ThreadMotion) ends with an exact stop
+  /// on its last move (a warning without one) and a G0-G3 (an error otherwise; WL4, §3.6).
+  bool threadSequenceEnds = false;
   /// S in a set-coordinates block is the constant surface speed's spindle limit.
   bool setCoordinatesSIsSpindleLimit = false;
   /// The address whose value is the constant surface speed's spindle limit in rpm, modal

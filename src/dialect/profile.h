@@ -115,6 +115,8 @@ enum class GAction : unsigned char {
   ProbeReturn,         // the block's move runs out and back to its start (WL4 G38)
   SkipMove,            // the block's move ends early on a touch signal (FMS-3000 G32)
   ThreadOnce,          // the block's G1 move is spindle-synchronised, F the lead (FMS-3000 G33)
+  ContourCycle,        // passes along a contour given by P Q block numbers, its start the
+                       // block's axis words (WL4 G76, G77 P, G78 P); arg = cycles::ContourCycle
 };
 
 struct GCodeSpec {
@@ -159,6 +161,10 @@ struct CycleChoices {
   /// G73 pattern repeat: relief step Δi/d (the textbook, 003:8930-8931) instead of Fanuc's
   /// Δi/(d-1).
   bool patternStepByPassCount = false;
+  /// Contour cycles (GAction::ContourCycle): the most blocks a level cycle's contour may have
+  /// (0: no limit), and the letters of contour blocks that are ignored, not run.
+  int maxContourBlocks = 0;
+  std::string contourIgnoredWords;
 };
 
 /// What one data-input block (NCT G10 L<n>) sets.

@@ -317,8 +317,10 @@ bool Interpreter::executeBlock(const ir::Block& block) {
   for (const ir::Word* o : w.other)
     if (o->is('O')) state_.lastO = static_cast<int>(o->number);
   const ModalState before = state_;
-  pendingTurning_ = nullptr;
+  pendingTurning_ = pendingContour_ = nullptr;
   if (!applyModal(w)) return false;
+  if (pendingContour_ && !contourCycleSide(w, before)) return false;
+  if (!threadSequenceEnd(w, false) || !surfaceSpeedSwitch(w, before)) return false;
   if (profile_.machine.surfaceSpeedHoldsCurrent && state_.surfaceSpeed && !before.surfaceSpeed &&
       !w.s) // the surface speed the spindle has now at the tool's radius
     state_.surfaceSpeedValue = state_.spindleSpeed * 2 * M_PI *
@@ -340,6 +342,7 @@ bool Interpreter::executeBlock(const ir::Block& block) {
   if (!beforeMotion(w)) return false;
   if (state_.cycle == GAction::DrillCycle && !deferCycles_) return drillBlock(w, consumed);
   if (pendingTurning_) return turningBlock(w);
+  if (pendingContour_) return contourCycleBlock(w, before);
   const bool arcWithCentreOnly =
       (state_.motion == GAction::ArcCW || state_.motion == GAction::ArcCCW) &&
       (w.ijk[0] || w.ijk[1] || w.ijk[2] || (w.r && profile_.machine.strictArcRadius));
@@ -366,6 +369,21 @@ bool Interpreter::executeBlock(const ir::Block& block) {
     pendingDwell_.reset();
   }
   return afterMotion(w);
+}
+
+bool Interpreter::surfaceSpeedSwitch(const BlockWords& w, const ModalState& before) {
+  if (!profile_.machine.surfaceSpeedSwitchNeedsS || w.s ||
+      state_.surfaceSpeed == before.surfaceSpeed)
+    return true;
+  const GAction now = state_.surfaceSpeed ? GAction::SurfaceSpeedOn : GAction::SurfaceSpeedOff;
+  const ir::Word* code = w.findAction(now);
+  return fail(diag::code::SurfaceSpeedSwitchWithoutS, code ? code->range : blockRange_,
+              fmt::format("{} switches the meaning of S ({} to {}) without a new S in the same "
+                          "block, which the manual does not allow (wl4.md §2.4)",
+                          code ? gName(*code) : codeName(profile_, now),
+                          codeName(profile_, state_.surfaceSpeed ? GAction::SurfaceSpeedOff
+                                                                 : GAction::SurfaceSpeedOn),
+                          codeName(profile_, now)));
 }
 
 bool Interpreter::setModal(const GCodeSpec& g) {
@@ -518,6 +536,9 @@ bool Interpreter::applyModal(const BlockWords& w) {
       break; // radiusCompensation()
     case GAction::DrillCycle:
       state_.cycle = g->action; // drillBlock() stores the block's data and drills
+      break;
+    case GAction::ContourCycle:
+      if (!deferCycles_) pendingContour_ = g; // contourCycleBlock() runs it
       break;
     case GAction::TurningCycle:
       if (deferCycles_) break;
@@ -1292,7 +1313,16 @@ bool Interpreter::auxiliary(const BlockWords& w, MTiming phase) {
   // S, T and each M code act before or after the motion of their block as the dialect times
   // them (NCT: all after, nct.md §2.2)
   const MachineRules& rules = profile_.machine;
-  if (w.t && rules.toolTiming == phase) state_.selectedTool = static_cast<int>(w.t->number);
+  if (w.t && rules.toolTiming == phase) {
+    state_.selectedTool = static_cast<int>(w.t->number);
+    if (rules.toolSelectsOffsets) { // the working point's offsets move the zero; T0: none
+      const auto it = setup_.tools.find(state_.selectedTool);
+      const bool none = state_.selectedTool == 0 || it == setup_.tools.end();
+      const std::array<double, 3> t = none ? std::array<double, 3>{} : it->second.turning;
+      offsets_.turning = Vec3(t[0], t[1], t[2]);
+      reexpress(); // nothing moves: the next move of an axis goes to its new zero
+    }
+  }
   bool spindleChanged = false;
   // S in a set-coordinates block may be the surface speed's clamp, not a speed (G92 S)
   const bool clampOnly = w.has(GAction::SetCoordinates) && rules.setCoordinatesSIsSpindleLimit;
@@ -1378,6 +1408,7 @@ bool Interpreter::mcodes(const BlockWords& w, MTiming timing) {
       break;
     case MAction::End:
     case MAction::EndRewind:
+      if (!threadSequenceEnd(w, true)) return false;
       e.kind = Kind::End;
       e.value = code;
       emit(std::move(e));

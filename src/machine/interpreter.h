@@ -244,6 +244,11 @@ private:
   bool threadOnce(const ir::Word& code);
   /// A WL4 G32/G33 thread move to `to` (thread_motion.cpp, wl4.md §3.6).
   bool threadMove(const BlockWords& w, const Vec3& to, const motion::Extra& extraTo);
+  /// After the block's modal codes: a thread-line sequence that ends here ends with an exact
+  /// stop and G0-G3 (MachineRules::threadSequenceEnds); `ending`: the program ends.
+  bool threadSequenceEnd(const BlockWords& w, bool ending);
+  /// G96 <-> G97 without S in the block (MachineRules::surfaceSpeedSwitchNeedsS).
+  bool surfaceSpeedSwitch(const BlockWords& w, const ModalState& before);
   /// The arc from the current position about `centre` (program coordinates) to `end`.
   bool arcTo(const Vec3& end, const Vec3& centre, bool cw, int turns, const motion::Extra& extraEnd,
              double feed);
@@ -308,13 +313,21 @@ private:
   /// The blocks ns..nf named by the block's P and Q, checked against §4.7; false if reported.
   bool contourBlocks(const BlockWords& w, std::vector<ContourBlock>& out);
   /// The contour's moves as a scratch copy of this interpreter makes them, in program
-  /// coordinates; G40-G42 are left out (roughing ignores them, Q-14).
+  /// coordinates; G40-G42 are left out (roughing ignores them, Q-14). The copy starts where
+  /// this one stands, or at `start` (program coordinates).
   bool traceContour(const std::vector<ContourBlock>& blocks,
-                    std::vector<cycles::ContourSegment>& out);
+                    std::vector<cycles::ContourSegment>& out, const Vec3* start = nullptr);
   /// A turning-cycle block: stores a first block's values or runs the cycle (G71.7-G79.7).
   bool turningCycle(cycles::TurningCycle cycle, const BlockWords& w);
   /// The block's words for the turning library: raw values in mm, diameters not halved.
   cycles::TurningWords turningWords(cycles::TurningCycle cycle, const BlockWords& w) const;
+  // --- contour cycles (contour_cycles.cpp, wl4.md §5.6) --------------------------------------
+  /// The block's G41/G42 belong to the cycle (pendingContour_): they give contourSide_ and
+  /// leave compensation off; it must be off before the block. False if reported.
+  bool contourCycleSide(const BlockWords& w, const ModalState& before);
+  /// A block with a contour cycle: trace the contour P..Q from the block's start point, apply
+  /// the allowances, run the passes; F acts only inside the cycle.
+  bool contourCycleBlock(const BlockWords& w, const ModalState& before);
   Vec3 toProgram(const Vec3& machine) const {
     return transforms_.applyInverse(machine - workOrigin());
   }
@@ -337,6 +350,10 @@ private:
 
   // --- cutter radius compensation (radius_compensation.cpp, docs/compensation.md) ----------
   CompensationStage::Options compensationOptions() const;
+  /// The offset of the tool-centre path: register D's radius (negative swaps the side), or
+  /// with the lathe tool data the selected tool's nose radius plus D, never below 0. Nullopt
+  /// after reporting (no register D, a negative sum).
+  std::optional<double> compensationRadius(const BlockWords& w);
   /// The block's G40/G41/G42, D, plane and look-ahead breakers, handed to the stage.
   bool radiusCompensation(const BlockWords& w, const ModalState& before);
   /// G39 I J K: the corner arc towards the perpendicular of the vector, now.
@@ -360,7 +377,12 @@ private:
   Offsets offsets_;
   Transforms transforms_;
   Vec3 program_ = Vec3::Zero();
-  std::optional<double> threadLead_;     // the lead of the running G32/G33 sequence
+  std::optional<double> threadLead_; // the lead of the running G32/G33 sequence
+  struct ThreadEnd {                 // the last move of an open thread-line sequence
+    SourceRange block;
+    bool exactStop = false;
+  };
+  std::optional<ThreadEnd> threadEnd_;   // (MachineRules::threadSequenceEnds)
   bool probing_ = false;                 // a G38 block's move: its events are kept
   std::vector<motion::Event> probePath_; // to run back along
   ProbeResult probe_;
@@ -380,7 +402,9 @@ private:
   CompensationStage comp_;     // between the programmed path and the sink
   ContourSource contours_;
   std::optional<std::int64_t> resumeAfter_;
-  const GCodeSpec* pendingTurning_ = nullptr;    // a one-shot turning cycle in the current block
+  const GCodeSpec* pendingTurning_ = nullptr; // a one-shot turning cycle in the current block
+  const GCodeSpec* pendingContour_ = nullptr; // a contour cycle in the current block
+  int contourSide_ = 0; // its G41 (+1) / G42 (-1): allowance side and compensation in the cycle
   std::optional<cycles::LevelCycle> levelCycle_; // the level cycle whose words are kept
   std::string levelCode_;                        // its code as written, for messages: "G81"
   std::map<char, double> levelWords_;            // its parameters, remembered until G80 or another

@@ -23,6 +23,32 @@ bool movesInPlane(const BlockWords& w, const motion::PlaneAxes& ax, bool arcMode
 
 } // namespace
 
+std::optional<double> Interpreter::compensationRadius(const BlockWords& w) {
+  double d = 0;
+  if (state_.lastD != 0) {
+    const auto it = setup_.tools.find(state_.lastD);
+    if (it == setup_.tools.end()) {
+      fail(diag::code::CompNoRegister, w.d ? w.d->range : blockRange_,
+           fmt::format("D{}: the setup's tool table has no radius register {}", state_.lastD,
+                       state_.lastD));
+      return std::nullopt;
+    }
+    d = it->second.radius;
+  }
+  if (!profile_.machine.toolSelectsOffsets) return d; // a negative D swaps the side
+  // the nose radius Rt of the selected tool plus corrector D, never below 0 (wl4.md §4.1)
+  const auto t = setup_.tools.find(state_.selectedTool);
+  const double rt = state_.selectedTool == 0 || t == setup_.tools.end() ? 0 : t->second.noseRadius;
+  if (rt + d < 0) {
+    fail(diag::code::CompNegativeRadius, w.d ? w.d->range : blockRange_,
+         fmt::format("the compensation radius Rt + D = {:g} + {:g} of tool {} and register D{} is "
+                     "negative: Rt + D must be >= 0",
+                     rt, d, state_.selectedTool, state_.lastD));
+    return std::nullopt;
+  }
+  return rt + d;
+}
+
 CompensationStage::Options Interpreter::compensationOptions() const {
   CompensationStage::Options o;
   o.lookAheadBlocks = 2 + static_cast<int>(setting(profile_, setup_, Setting::CompLookAhead));
@@ -80,14 +106,9 @@ bool Interpreter::radiusCompensation(const BlockWords& w, const ModalState& befo
   double radius = 0;
   if (on) {
     side = state_.radiusComp == GAction::RadiusCompLeft ? 1 : -1;
-    if (state_.lastD != 0) {
-      const auto it = setup_.tools.find(state_.lastD);
-      if (it == setup_.tools.end())
-        return fail(diag::code::CompNoRegister, w.d ? w.d->range : blockRange_,
-                    fmt::format("D{}: the setup's tool table has no radius register {}",
-                                state_.lastD, state_.lastD));
-      radius = it->second.radius;
-    }
+    const auto r = compensationRadius(w);
+    if (!r) return false;
+    radius = *r;
     if (radius < 0) side = -side, radius = -radius; // a negative radius swaps the side
     // an odd number of mirrored plane axes swaps G41 and G42 (nct.md §3.15)
     const Eigen::Matrix3d m = transforms_.matrix().linear();
@@ -135,6 +156,8 @@ bool Interpreter::radiusCompensation(const BlockWords& w, const ModalState& befo
   // a canned cycle's holes and passes are not compensated (cycles.md Q-20): a breaker too
   breaks = breaks || (state_.cycle == GAction::DrillCycle && !deferCycles_) || pendingTurning_ ||
            state_.motion == GAction::TurningCycle;
+  // a T that moves the zero changes the frame the waiting element was offset in
+  breaks = breaks || (w.t && profile_.machine.toolSelectsOffsets);
   if (breaks) comp_.breakLookAhead(*sink_);
   // G39 corner arc, G38 vector hold (nct.md §3.17.5)
   for (GAction a : {GAction::CornerArc, GAction::VectorHold}) {

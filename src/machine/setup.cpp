@@ -476,19 +476,28 @@ private:
             ok = false;
           continue;
         }
-        double* target = f.key() == "length"   ? &tool.length
-                         : f.key() == "radius" ? &tool.radius
-                                               : nullptr;
+        double* target = f.key() == "length"        ? &tool.length
+                         : f.key() == "radius"      ? &tool.radius
+                         : f.key() == "nose_radius" ? &tool.noseRadius
+                                                    : nullptr;
         if (!target) {
           atKey(field, code::SetupUnknownKey,
-                fmt::format("unknown key {} in {}; the keys are length, radius, turning",
+                fmt::format("unknown key {} in {}; the keys are length, radius, nose_radius, "
+                            "turning",
                             keyName(f.key()), what));
           continue;
         }
-        if (auto x = number(f.value(), field, fmt::format("{} {}", what, f.key())))
+        if (auto x = number(f.value(), field, fmt::format("{} {}", what, f.key()))) {
           *target = *x;
-        else
+          if (target == &tool.noseRadius && *x < 0) { // Rt is positive (002:1324-1326)
+            atValue(
+                field, code::SetupBadValue,
+                fmt::format("{} nose_radius {:g} is negative: a nose radius is >= 0", what, *x));
+            ok = false;
+          }
+        } else {
           ok = false;
+        }
       }
       if (ok) out.tools[static_cast<int>(*n)] = tool;
     }

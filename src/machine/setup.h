@@ -28,6 +28,8 @@ namespace gcx::machine {
 struct ToolData {
   double length = 0; // mm, offset register n = tool n
   double radius = 0; // mm
+  /// The cutting edge's nose radius Rt, >= 0 (WL4's lathe tool data, wl4.md §4.1), mm
+  double noseRadius = 0;
   /// G43.7 turning offsets X Y Z (geometry + wear), mm in the machine frame (nct.md §3.16)
   std::array<double, 3> turning{0, 0, 0};
 };

@@ -42,7 +42,11 @@ bool Interpreter::threadMove(const BlockWords& w, const Vec3& to, const motion::
   const motion::Extra extraFrom = extra_;
   emitLine(motion::Kind::Feed, end, extraTo, leadZ, leadZ);
   program_ = to;
-  if (state_.motion != GAction::ThreadReciprocating) return true;
+  if (state_.motion != GAction::ThreadReciprocating) {
+    if (profile_.machine.threadSequenceEnds)
+      threadEnd_ = ThreadEnd{blockRange_, w.has(GAction::ExactStopOnce)};
+    return true;
+  }
   const int direction = state_.spindleDirection;
   state_.spindleDirection = -direction;
   emitSpindle();
@@ -66,6 +70,32 @@ bool Interpreter::threadOnce(const ir::Word& code) {
         fmt::format("{} with an arc (a spindle-synchronised arc) is not implemented yet", name));
   state_.motion = GAction::ThreadMotion;
   threadLead_.reset(); // F of this block, or the one in force, is the lead
+  return true;
+}
+
+bool Interpreter::threadSequenceEnd(const BlockWords& w, bool ending) {
+  if (!threadEnd_ || (!ending && state_.motion == GAction::ThreadMotion)) return true;
+  const ThreadEnd last = *std::exchange(threadEnd_, std::nullopt);
+  const std::string thread = codeName(profile_, GAction::ThreadMotion);
+  const GAction m = state_.motion;
+  if (ending || (m != GAction::Rapid && m != GAction::Linear && m != GAction::ArcCW &&
+                 m != GAction::ArcCCW)) {
+    const ir::Word* code = ending ? nullptr : w.findAction(m);
+    return fail(diag::code::ThreadSequenceOpen, code ? code->range : blockRange_,
+                fmt::format("{} the {} sequence before it: a thread sequence ends with {} on "
+                            "its last move and then {}-{} (wl4.md §3.6)",
+                            ending ? "the program ends inside" : "this code does not end", thread,
+                            codeName(profile_, GAction::ExactStopOnce),
+                            codeName(profile_, GAction::Rapid),
+                            codeName(profile_, GAction::ArcCCW)));
+  }
+  if (!last.exactStop)
+    diags_.warning(diag::code::ThreadSequenceNoStop, last.block,
+                   fmt::format("the last move of this {} sequence has no {}: the manual requires "
+                               "an exact stop there before {}-{} ends the thread (wl4.md §3.6)",
+                               thread, codeName(profile_, GAction::ExactStopOnce),
+                               codeName(profile_, GAction::Rapid),
+                               codeName(profile_, GAction::ArcCCW)));
   return true;
 }
 

@@ -18,7 +18,8 @@ namespace {
 
 /// What a contour block may contain (§4.7): moves G00-G03, G90/G91, G40-G42, coordinates and
 /// arc words, chamfer and rounding, F S T.
-bool allowedInContour(const ir::Word& w, const Profile& profile) {
+bool allowedInContour(const ir::Word& w, const Profile& profile, char chamferLetter) {
+  if (chamferLetter && w.is(chamferLetter)) return true; // the automatic chamfer's leg
   if (w.is('G')) {
     const GCodeSpec* g = profile.gcode(w.number);
     if (!g) return false;
@@ -32,6 +33,8 @@ bool allowedInContour(const ir::Word& w, const Profile& profile) {
     case GAction::RadiusCompOff:
     case GAction::RadiusCompLeft:
     case GAction::RadiusCompRight:
+    case GAction::FilletCW: // a contour may use every motion of group 1 but threads (wl4.md §5.6)
+    case GAction::FilletCCW:
       return true;
     default:
       return false;
@@ -57,7 +60,9 @@ public:
 bool Interpreter::contourBlocks(const BlockWords& w, std::vector<ContourBlock>& out) {
   const ir::Word* cycle = w.gWords.front();
   for (std::size_t i = 0; i < w.gWords.size(); ++i)
-    if (w.gCodes[i] && w.gCodes[i]->action == GAction::TurningCycle) cycle = w.gWords[i];
+    if (w.gCodes[i] && (w.gCodes[i]->action == GAction::TurningCycle ||
+                        w.gCodes[i]->action == GAction::ContourCycle))
+      cycle = w.gWords[i];
   const std::string name = fmt::format("G{}", emit::formatNumber(cycle->number));
   if (!w.p || !w.q)
     return fail(diag::code::CyclePQNotFound, cycle->range,
@@ -75,12 +80,19 @@ bool Interpreter::contourBlocks(const BlockWords& w, std::vector<ContourBlock>& 
                : fail(
                      diag::code::CyclePQNotFound, w.p->range,
                      fmt::format("{}: contour N{} to N{} not found in this program", name, ns, nf));
-  for (const ContourBlock& c : out) {
+  const std::string& ignored = profile_.cycleChoices.contourIgnoredWords;
+  const ContourWords& geometry = profile_.machine.contour;
+  const char chamferLetter =
+      parameter(geometry.chamferAxisKey, 0) == 1 ? geometry.chamferAxis : char{0};
+  for (ContourBlock& c : out) {
+    std::erase_if(c.block.words, [&](const ir::Word& word) { // F S T M of WL4 (§5.6)
+      return word.address.size() == 1 && ignored.find(word.address[0]) != std::string::npos;
+    });
     if (!c.block.stmts.empty())
       return fail(diag::code::CycleContourCommand, c.block.stmts.front().range,
                   "a macro statement inside a turning contour (cycles.md §4.7)");
     for (const ir::Word& word : c.block.words)
-      if (!allowedInContour(word, profile_))
+      if (!allowedInContour(word, profile_, chamferLetter))
         return fail(
             diag::code::CycleContourCommand, word.range,
             fmt::format("{} is not allowed inside a turning contour: only G00-G03, G40-G42, "
@@ -92,10 +104,14 @@ bool Interpreter::contourBlocks(const BlockWords& w, std::vector<ContourBlock>& 
 }
 
 bool Interpreter::traceContour(const std::vector<ContourBlock>& blocks,
-                               std::vector<cycles::ContourSegment>& out) {
+                               std::vector<cycles::ContourSegment>& out, const Vec3* start) {
   Capture capture;
   Interpreter probe(*this);
   probe.sink_ = &capture;
+  if (start) {
+    probe.program_ = *start;
+    probe.machine_ = probe.toMachine(*start);
+  }
   probe.comp_ = CompensationStage(compensationOptions()); // the contour's own path
   probe.corners_ = ContourCornerStage();
   probe.contours_ = nullptr;

@@ -43,7 +43,7 @@ protected:
 
 TEST_F(Wl4TranslateStructure, EveryExampleAndDifferentialProgram) {
   const std::vector<fs::path> files = wl4Programs();
-  ASSERT_GE(files.size(), 17u);
+  ASSERT_GE(files.size(), 28u); // 2 examples, 26 differential programs
   for (const fs::path& f : files)
     folder_.write(f.filename().string(), readFile(f));
   for (const fs::path& f : files) {
@@ -69,6 +69,33 @@ TEST_F(Wl4TranslateStructure, LatheVectorsOnTheirSetup) {
   for (const char* name : {"tv18.wl4", "tv19.wl4"}) {
     const std::string kept = translate(name, " --setup lathe.setup.json");
     EXPECT_EQ(kept.find("G32"), std::string::npos) << kept; // G31 stays one block
+  }
+}
+
+TEST_F(Wl4TranslateStructure, VectorsOnTheirSetupsAndTheManualsExamples) {
+  // TV5, TV6, TV12, TV18, TV19, TV21 and the runnable examples of §7, each on its setup
+  const std::vector<Wl4ProgramOnSetup> programs = wl4ProgramsOnSetups();
+  ASSERT_EQ(programs.size(), 18u);
+  for (const Wl4ProgramOnSetup& p : programs) {
+    folder_.write(p.name + ".wl4", p.text);
+    std::string setup;
+    if (!p.setup.empty()) {
+      folder_.write(p.name + ".setup.json", p.setup);
+      setup = " --setup " + p.name + ".setup.json";
+    }
+    keeps(p.text, translate(p.name + ".wl4", setup), p.name);
+  }
+}
+
+TEST_F(Wl4TranslateStructure, ContourCyclesOnTheLathe) {
+  // the manual's examples 21-23 and the spec's worked example (§5.6): the cycle blocks and their
+  // contours after M2 come back as written, and the translation moves the tool as they do
+  for (const Wl4ProgramOnSetup& p : wl4ContourCyclePrograms()) {
+    folder_.write(p.name + ".wl4", p.text);
+    folder_.write(p.name + ".setup.json", p.setup);
+    const std::string kept = translate(p.name + ".wl4", " --setup " + p.name + ".setup.json");
+    keeps(p.text, kept, p.name);
+    EXPECT_NE(kept.find("M2\nN"), std::string::npos) << kept; // the contour after M2
   }
 }
 

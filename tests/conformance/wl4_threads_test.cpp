@@ -93,13 +93,13 @@ TEST(Wl4Threads_3_6, G32IsASynchronisedLineWithFTheLead) {
 }
 
 TEST(Wl4Threads_3_6, FLeadsTheLongerAxisAndAfterTheSequenceANewFActs) {
-  MacroRun r = runWl4("%P\nG18 G90 G0 X0 Z0 S500 M3\nG32 X8 Z-2 F2\nZ-10 F3\nG1 X20 Z-11\n"
-                      "G32 Z-20\nM2\n%\n");
+  MacroRun r = runWl4("%P\nG18 G90 G0 X0 Z0 S500 M3\nG32 X8 Z-2 F2\nZ-10 F3 G9\nG1 X20 Z-11\n"
+                      "G32 Z-20 G9\nG0 X30\nM2\n%\n");
   ASSERT_TRUE(r.errors.empty()) << r.rendered;
   // X travels 8, Z 2: F2 is the lead along X, so Z advances 0.5 per revolution; the F3 of the
   // sequence's second block waits for its end, then feeds G1 and leads the next sequence
   EXPECT_EQ(withThreads(r), (V{"EV S500 M3", "TH 8,0,-2 K0.5", "TH 8,0,-10 K2", "L 20,0,-11 F3",
-                               "TH 20,0,-20 K3", "END"}));
+                               "TH 20,0,-20 K3", "R 30,0,-20", "END"}));
 }
 
 TEST(Wl4Threads_3_6, G33ThreadsOutReversesTheSpindleAndThreadsBack) {
@@ -155,6 +155,19 @@ TEST(Wl4OpenCycles_5_5, G31WithAFlankInfeedShiftsEachPassStart) {
   // Z words from variables round to 0.001 (§6.1): the spec's values exactly
   EXPECT_EQ(starts,
             (V{"3.268", "3.124", "2.979", "2.835", "2.763", "2.727", "2.709", "2.691", "2.691"}));
+}
+
+TEST(Wl4OpenCycles_5_5, G31WithATaperWidensAnExternalThreadTowardItsEnd) {
+  // worked by hand through §5.4 (its restored signs: #18 = -1 outside, #14 = #20 - #22*#18):
+  // #3 = 1 on the diameter over the 25 mm from A's Z to the end, no run-out; #1 = 0 leaves the
+  // zero-cut pass and the spring pass, each from X24 at Z5 to X25 at Z-20
+  MacroRun r = runWl4("%P\nG18 G90\nG0 X30 Z5\n"
+                      "G31 X24 Z-20 F1.5 P0 I0 #1=0 #2=0.25 #3=1 #4=0 #5=0\nM2\n%\n",
+                      lathe());
+  ASSERT_TRUE(r.errors.empty()) << r.rendered;
+  EXPECT_EQ(withThreads(r),
+            (V{"R 15,0,5", "R 12,0,5", "TH 12.5,0,-20 K1.5", "R 15,0,-20", "R 15,0,5", "R 12,0,5",
+               "TH 12.5,0,-20 K1.5", "R 15,0,-20", "R 15,0,5", "END"}));
 }
 
 } // namespace

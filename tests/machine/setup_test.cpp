@@ -169,7 +169,8 @@ TEST(Setup, UnknownKeysNameTheAllowedOnes) {
                           "reference_points, rapid_rate, and the dialect sections nct, fms3000, "
                           "wl4");
   EXPECT_EQ(l.message(1),
-            "unknown key \"diameter\" in tool 3; the keys are length, radius, turning");
+            "unknown key \"diameter\" in tool 3; the keys are length, radius, nose_radius, "
+            "turning");
 }
 
 TEST(Setup, TurningOffsetsAreThreeNumbers) { // G43.7 (nct.md §3.16)
@@ -181,6 +182,18 @@ TEST(Setup, TurningOffsetsAreThreeNumbers) { // G43.7 (nct.md §3.16)
   parse(bad, R"({"tools": {"11": {"turning": [1, 2]}}})");
   EXPECT_FALSE(bad.setup);
   EXPECT_EQ(bad.errors(), (std::vector<std::string>{"1:30 GCX023"}));
+}
+
+TEST(Setup, ANoseRadiusIsANumberNotBelowZero) { // WL4's Rt (wl4.md §4.1, 002:1324-1326)
+  Loaded l;
+  parse(l, R"({"tools": {"1": {"nose_radius": 0.8, "radius": -0.3}}})");
+  ASSERT_TRUE(l.setup) << l.rendered();
+  EXPECT_EQ(l.setup->tools.at(1).noseRadius, 0.8);
+  EXPECT_EQ(l.setup->tools.at(1).radius, -0.3);
+  Loaded bad;
+  parse(bad, R"({"tools": {"1": {"nose_radius": -0.1}}})");
+  EXPECT_FALSE(bad.setup);
+  EXPECT_EQ(bad.errors(), (std::vector<std::string>{"1:33 GCX023"}));
 }
 
 TEST(Setup, WrongTypesAreLocatedAtTheValue) {

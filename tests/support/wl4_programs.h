@@ -47,7 +47,7 @@ struct Wl4ProgramOnSetup {
 };
 
 // wl4.md §8 vectors that need a setup or the lathe, and the runnable examples of §7 (7 stops at
-// M0, 16 loops for ever, 21-23 are the contour cycles): each as a whole program
+// M0, 16 loops for ever, 21-23 are the contour cycles, below): each as a whole program
 inline std::vector<Wl4ProgramOnSetup> wl4ProgramsOnSetups() {
   const std::string lathe = R"({"wl4": {"parameters": {"lathe": 1, "b_chamfer": 1}}})";
   return {
@@ -93,6 +93,39 @@ inline std::vector<Wl4ProgramOnSetup> wl4ProgramsOnSetups() {
        "N20 G1 X0 Z100 F500 IF ((#1-#2)>0) Z0\nM2\n%\n",
        ""},
       {"example18", "%E18\nG0 X0\nL07\nL0703\nM2\n%\n%07\nG91 G1 X1 F100\nG90 M99\n%\n", ""},
+  };
+}
+
+// The contour cycles of wl4.md §5.6 on the lathe: the manual's examples 21-23 (their elided
+// blocks left out, G18 added; example 23's N124 gets the G1 the manual forgot: as printed it is
+// a G2 without R, docs/wl4.md "Manual versus spec") and the spec's worked example. Their
+// contours stand after M2.
+inline std::vector<Wl4ProgramOnSetup> wl4ContourCyclePrograms() {
+  const std::string lathe = R"({"wl4": {"parameters": {"lathe": 1}}})";
+  return {
+      {"example21",
+       "%TEST_G77_1\nG18\nN9 G0 X10 Z40\nN10 G77 G0 X2 Z45 P120 Q124 I0.5 K0.5 E2 F0.7 S500 M3\n"
+       "M2\nN120 G1 Z35 F0.3\nN121 G2 X5 Z25 R10\nN122 G3 X7 Z20 R8\nN123 G1 X8.5 Z18\n"
+       "N124 Z5\n%\n",
+       lathe},
+      {"example22",
+       "%TEST_G77\nG18\nN10 G0 Z100\nN11 T1 M6\nN12 G0 X10 Z40\n"
+       "N13 G77 G41 G0 X2 Z45 P120 Q124 R0.5 E2 F0.7 S500 M3\nN14 G0 Z100\nN15 T2 M6\n"
+       "N16 G0 X10 Z40\nN11 G77 G41 G0 X2 Z45 P120 Q124 R0.2 F0.3 S800\n"
+       "N12 G77 G41 G0 X2 Z45 P120 Q124 F0.3 S800\nM2\nN120 G1 Z35\nN121 G2 X5 Z25 R10\n"
+       "N122 G3 X7 Z20 R8\nN123 G1 X8.5 Z18\nN124 Z5\n%\n",
+       lathe},
+      {"example23",
+       "%TEST_G78\nG18\nN10 G0 Z100\nN11 T1 M6\nN12 G0 X10 Z40\n"
+       "N13 G78 G41 G0 X10 Z5 P120 Q124 R0.5 E2 F0.7 S500 M3\nN14 G0 Z100\nN15 T2 M6\n"
+       "N16 G0 X10 Z40\nN11 G78 G41 G0 X10 Z5 P120 Q124 R0.2 F0.3 S800\n"
+       "N12 G78 G41 G0 X10 Z5 P120 Q124 F0.3 S800\nM2\nN120 G1 X8.5\nN121 G1 X8 Z15\n"
+       "N122 G3 X7 Z20 R10\nN123 G2 X5 Z25 R8\nN124 G1 Z40\n%\n",
+       lathe},
+      {"g77pq",
+       "%P\nG18 G90 G0 X50 Z2\nG77 P200 Q202 G1 X30 Z0 I0 K0 E2.5 F0.25\nM2\nN200 G1 Z-20\n"
+       "N201 X40 Z-30\nN202 X50\n%\n",
+       lathe},
   };
 }
 

@@ -52,4 +52,10 @@ std::vector<std::string> errorsAt(const MacroRun& r) {
   return out;
 }
 
+machine::Setup wl4Lathe() {
+  machine::Setup s;
+  s.parameters["lathe"] = 1;
+  return s;
+}
+
 } // namespace gcx::test

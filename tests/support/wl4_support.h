@@ -26,5 +26,7 @@ MacroRun runWl4(const std::map<std::string, std::string>& files, const std::stri
 MacroRun runWl4(const std::string& text, const machine::Setup& setup = {});
 /// Errors without their file name: "line:col CODE".
 std::vector<std::string> errorsAt(const MacroRun& r);
+/// The lathe profile (wl4.md §0.2): setup parameter `lathe` = 1, X and U are diameters.
+machine::Setup wl4Lathe();
 
 } // namespace gcx::test
