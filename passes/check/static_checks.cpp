@@ -26,6 +26,7 @@ void StaticChecker::block(const ir::Block& b) {
   if (b.kind == ir::BlockKind::ProgramStart) {
     // `%` opens (and by Fanuc habit may close) a tape; between blocks it is an error
     if (blocks_ > 0 && !percentAfterStart_) percentAfterStart_ = b.range;
+    if (blocks_ == 0) startBeforeBlocks_ = true;
     return;
   }
   if (percentAfterStart_ && !b.empty()) {
@@ -233,6 +234,20 @@ void StaticChecker::statement(const ir::Stmt& s) {
   default:
     return;
   }
+}
+
+bool StaticChecker::join(StaticChecker&& next) {
+  // what a block's checks read of the blocks before: the open loops, a '%' waiting for the next
+  // block, and whether any block came before (a '%' after blocks is suspect)
+  if (!loops_.empty() || percentAfterStart_ || (blocks_ > 0 && next.startBeforeBlocks_))
+    return false;
+  startBeforeBlocks_ = startBeforeBlocks_ || (blocks_ == 0 && next.startBeforeBlocks_);
+  blocks_ += next.blocks_;
+  percentAfterStart_ = next.percentAfterStart_;
+  loops_ = std::move(next.loops_);
+  jumps_.insert(jumps_.end(), next.jumps_.begin(), next.jumps_.end());
+  labels_.merge(next.labels_);
+  return true;
 }
 
 void StaticChecker::finish(FileId file, bool hadBadBlocks) {

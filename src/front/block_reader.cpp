@@ -113,9 +113,25 @@ void BlockReader::newLine() {
   if (input_.converts()) offsetShift_ = input_.rawLineStarts()[rawLine_++] - offset_;
 }
 
+void BlockReader::startAt(std::uint64_t offset, std::uint32_t line) {
+  offset_ = lineStart_ = offset;
+  line_ = line;
+  curBegin_ = SourceLoc{file_, line_, 1, offset_};
+}
+
+void BlockReader::stopAt(std::uint64_t offset) {
+  stopAt_ = offset == 0 ? UINT64_MAX : offset;
+  stopped_ = false;
+}
+
+std::optional<std::uint64_t> BlockReader::stoppedAt() const {
+  if (!stopped_ || fatal_) return std::nullopt;
+  return curBegin_.offset;
+}
+
 bool BlockReader::next(RawBlock& out) {
   for (;;) {
-    if (fatal_) return false;
+    if (fatal_ || stopped_) return false;
     if (pos_ >= buf_.size() && !fill()) {
       if (fatal_) return false;
       if (inComment_) {
@@ -166,7 +182,9 @@ bool BlockReader::next(RawBlock& out) {
           inComment_ = inLineComment_ = false;
           const bool got = finishBlock(out);
           curBegin_ = SourceLoc{file_, line_, 1, offset_ + offsetShift_};
+          stopped_ = offset_ >= stopAt_; // the next block begins at or after the cut
           if (got) return true;
+          if (stopped_) return false;
           continue;
         }
         if (k == LineFeed) {

@@ -4,7 +4,9 @@
 // prepares the ASCII text the parsers read. Holds one block in memory at a time.
 #pragma once
 #include <array>
+#include <cstdint>
 #include <istream>
+#include <optional>
 #include <string>
 
 #include "diag/diagnostic.h"
@@ -26,6 +28,15 @@ public:
   /// The next non-blank block; false at end of input or after a fatal input error.
   bool next(RawBlock& out);
   bool sawAnyByte() const { return input_.sawAnyByte(); }
+
+  /// Reading a part of the file (BlockSource::startAt): the stream stands at byte `offset`, the
+  /// start of line `line`, before any block. Not for converted text (converts()).
+  void startAt(std::uint64_t offset, std::uint32_t line);
+  /// next() returns false at the first block boundary at or after `offset` (0: none).
+  void stopAt(std::uint64_t offset);
+  /// After next() returned false: the boundary it stopped at, or nothing at the end or an error.
+  std::optional<std::uint64_t> stoppedAt() const;
+  bool converts() const { return input_.converts(); }
 
 private:
   // what a byte means to the block cutter
@@ -75,6 +86,8 @@ private:
   std::string buf_;
   std::size_t pos_ = 0;
   bool fatal_ = false;
+  std::uint64_t stopAt_ = UINT64_MAX; // stopAt()
+  bool stopped_ = false;
 
   // position of the next byte to consume, in the decoded text
   std::uint64_t offset_ = 0;
