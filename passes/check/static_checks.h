@@ -29,6 +29,7 @@ public:
 private:
   void words(const ir::Block& b);
   void literal(const ir::Word& w, const AddressSpec& spec);
+  void literalFindings(const ir::Word& w, const AddressSpec& spec);
   void dataRecord(const ir::Block& b);
   void callArguments(const ir::Block& b);
   void statement(const ir::Stmt& s);
