@@ -120,11 +120,21 @@ ir::Stmt& BlockBuilder::newStmt(ir::StmtKind kind, std::size_t pos, std::size_t 
 }
 
 namespace {
-bool isDefault(const ir::Expr& e) {
-  return e.kind == ir::ExprKind::Number && e.op == ir::Op::Add && e.func == ir::Func::Sin &&
-         !e.prmHasBit && !e.prmHasIndex && e.number == 0 && !std::signbit(e.number) &&
-         e.name.empty() && e.args.empty() && e.range.begin.file == 0 && e.range.begin.line == 0 &&
-         e.range.begin.col == 0 && e.range.begin.offset == 0 && e.range.length == 0;
+// e made equal to ir::Expr{}: without its heap parts (the usual case, a literal's expression
+// was never set) field by field, cheaper than building one and moving it in
+void resetExpr(ir::Expr& e) {
+  if (!e.name.empty() || !e.args.empty()) {
+    e = ir::Expr{};
+    return;
+  }
+  static const ir::Expr fresh;
+  e.kind = fresh.kind;
+  e.op = fresh.op;
+  e.func = fresh.func;
+  e.prmHasBit = fresh.prmHasBit;
+  e.prmHasIndex = fresh.prmHasIndex;
+  e.number = fresh.number;
+  e.range = fresh.range;
 }
 
 // A word of an earlier block made equal to a new ir::Word, keeping its strings' storage.
@@ -133,7 +143,7 @@ void resetWord(ir::Word& w) {
   w.kind = ir::ValueKind::Number;
   w.number = 0;
   w.text.clear();
-  if (!isDefault(w.expr)) w.expr = ir::Expr{};
+  resetExpr(w.expr);
   w.axisIndex.clear();
 }
 } // namespace
