@@ -78,9 +78,11 @@ private:
   std::array<ByteClass, 256> classes_{};
   std::array<signed char, 128> asciiAlias_{}; // index into rules_.signAliases, or -1
   std::array<LexClass, 256> lexClasses_{};
-  // classes_ with kLexWork set where the byte is not PlainText: the cutting loop counts those,
-  // so a block without any skips normalize()'s pass over its bytes
+  // classes_ with kLexWork set where the byte is not PlainText (kCarriageReturn for a CR): the
+  // cutting loop ORs them, so a block without any skips normalize()'s pass over its bytes
   static constexpr unsigned char kLexWork = 0x80;
+  static constexpr unsigned char kCarriageReturn = 0x40; // a CR at the block's end is no work
+  static constexpr unsigned char kCutter = 0x3F;         // the ByteClass bits
   std::array<unsigned char, 256> scanClasses_{};
 
   std::string buf_;
@@ -107,7 +109,7 @@ private:
   bool inLineComment_ = false; // after a line-comment marker
   SourceLoc commentLoc_;
   bool overflow_ = false;
-  std::size_t curLexWork_ = 0; // bytes of cur_ normalize() may change (an upper bound)
+  unsigned char curLex_ = 0; // scanClasses_ of cur_'s bytes ORed: what normalize() may change
 };
 
 } // namespace gcx::front
