@@ -151,8 +151,11 @@ FastResult parseFast(const front::RawBlock& raw, ir::Block& out, diag::Engine& d
     const std::string_view digits(s + piece.digitsPos, piece.digitsLen);
     switch (piece.kind) {
     case Piece::Word:
-      if (piece.exact)
-        b.literalWord(piece.letter, piece.pos, piece.len, piece.incremental, piece.sign, digits,
+      // exact, with its sign (if any) right before the digits: the text as written is one view
+      if (piece.exact && (!piece.sign || s[piece.digitsPos - 1] == piece.sign))
+        b.literalWord(piece.letter, piece.pos, piece.len, piece.incremental, piece.sign == '-',
+                      std::string_view(digits.data() - (piece.sign ? 1 : 0),
+                                       digits.size() + (piece.sign ? 1 : 0)),
                       piece.value);
       else
         b.literalWord(std::string_view(&piece.letter, 1), piece.pos, piece.len, piece.incremental,
