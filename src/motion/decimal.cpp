@@ -122,7 +122,8 @@ template <int decimals> char* writeFraction(char* to, std::uint64_t frac) {
 // fraction dropped; letter: not 0, the text is a word " X..." (putWord). Decimals as a template
 // argument: the split into whole and fraction divides by a constant, which the compiler turns
 // into a multiplication (a 64-bit division is some 40 cycles).
-template <int decimals> char* writeScaled(char* to, std::int64_t r, char letter) {
+template <int decimals>
+[[gnu::always_inline]] inline char* writeScaled(char* to, std::int64_t r, char letter) {
   if (letter) {
     to[0] = ' ';
     to[1] = letter;
