@@ -205,11 +205,16 @@ bool Interpreter::admitMotion(const motion::Event& e) {
   // beyond a kilometre-scale machine by far, and below what any output writes in full
   constexpr double kMaxCoordinate = 1e9;
   const auto writable = [&](double v) { return std::fabs(v) < kMaxCoordinate; };
-  const bool finite = e.start.allFinite() && e.end.allFinite() && e.center.allFinite() &&
-                      e.extraEnd.allFinite() && std::isfinite(e.feed);
-  if (!finite || !writable(e.end.x()) || !writable(e.end.y()) || !writable(e.end.z()) ||
-      !writable(e.center.x()) || !writable(e.center.y()) || !writable(e.center.z()) ||
-      e.extraEnd.cwiseAbs().maxCoeff() >= kMaxCoordinate || !writable(e.feed))
+  // the usual move at a glance: every value writable (a NaN fails each comparison), no branch
+  const bool usual =
+      (writable(e.end.x()) & writable(e.end.y()) & writable(e.end.z()) & writable(e.center.x()) &
+       writable(e.center.y()) & writable(e.center.z()) & writable(e.feed)) &&
+      (e.extraEnd.array().abs() < kMaxCoordinate).all() && e.start.allFinite();
+  const bool finite = usual || (e.start.allFinite() && e.end.allFinite() && e.center.allFinite() &&
+                                e.extraEnd.allFinite() && std::isfinite(e.feed));
+  if (!usual && (!finite || !writable(e.end.x()) || !writable(e.end.y()) || !writable(e.end.z()) ||
+                 !writable(e.center.x()) || !writable(e.center.y()) || !writable(e.center.z()) ||
+                 e.extraEnd.cwiseAbs().maxCoeff() >= kMaxCoordinate || !writable(e.feed)))
     return fail(diag::code::ValueOutOfRange, blockRange_,
                 finite ? fmt::format("the move reaches a coordinate or feed of magnitude 1e9 or "
                                      "more (machine frame, mm)")
