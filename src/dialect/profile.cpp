@@ -14,6 +14,11 @@ void Profile::index() {
   for (std::size_t i = gcodes.size(); i-- > 0;) // the first row of a code wins, as in gcode()
     if (const int t = gcodes[i].code10; t >= 0 && t % 10 == 0 && t / 10 < 256)
       wholeGCodes_[static_cast<std::size_t>(t / 10)] = static_cast<int>(i + 1);
+  actions_.fill(0);
+  for (const GCodeSpec& g : gcodes) {
+    const auto bit = static_cast<unsigned>(g.action);
+    actions_[bit / 64] |= std::uint64_t{1} << (bit % 64);
+  }
   indexed_ = true;
 }
 

@@ -222,6 +222,12 @@ struct Profile {
   }
   /// Builds the lookup tables; call once after filling the vectors.
   void index();
+  /// True if a G code of the table has the action (before index(): true, not knowing), so that
+  /// a rule for an action the dialect lacks is not looked for in every block.
+  bool defines(GAction a) const {
+    const auto bit = static_cast<unsigned>(a);
+    return !indexed_ || ((actions_[bit / 64] >> (bit % 64)) & 1u);
+  }
   /// Inline for the whole codes G0-G255 of the table, the codes of nearly every block.
   const GCodeSpec* gcode(double value) const {
     if (indexed_ && value >= 0 && value < 256 && value == static_cast<int>(value)) {
@@ -238,6 +244,7 @@ private:
   std::array<int, 26> letters_{}; // index+1 into addresses of single letters (0: none)
   // index+1 into gcodes of the whole codes G0-G255 (0: none), the codes of nearly every block
   std::array<int, 256> wholeGCodes_{};
+  std::array<std::uint64_t, 4> actions_{}; // the actions of the table's codes, as bits
   bool indexed_ = false;
 };
 
