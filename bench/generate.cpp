@@ -4,7 +4,8 @@
 //   macro   an NCT WHILE loop that emits LINES G1 blocks (the macro expansion pass)
 //   oword   the same loop for LinuxCNC (o100 while ... o100 endwhile), for rs274
 //   exprs   LINES blocks of assignments and bracketed expressions, none of them fit for the
-//           fast path: the rate of the ANTLR grammar path (gcx check)
+//           fast path: the rate of the ANTLR grammar path (gcx check) and the macro pass
+//   exprsngc the same blocks for LinuxCNC, whose assignments need the whole value in brackets
 //   g83     LINES holes of one G83 peck cycle (Q5, E0.254 so the clearance equals LinuxCNC's
 //           fixed 0.254 mm), starting above R (G98 to the initial level Z10)
 //   g83ngc  the same holes for LinuxCNC: identical text without the E word, which rs274 rejects
@@ -15,7 +16,8 @@
 
 int main(int argc, char** argv) {
   if (argc != 3) {
-    std::fprintf(stderr, "usage: gcx-bench-gen lines|holes|macro|oword|exprs|g83|g83ngc LINES\n");
+    std::fprintf(stderr,
+                 "usage: gcx-bench-gen lines|holes|macro|oword|exprs|exprsngc|g83|g83ngc LINES\n");
     return 2;
   }
   const std::string kind = argv[1];
@@ -48,12 +50,14 @@ int main(int argc, char** argv) {
     for (long i = 4; i < n - 1; ++i)
       std::printf("X%.3f Y%.3f\n", (i % 1000) * 0.5, (i / 1000) * 0.5);
     std::printf("G80\n");
-  } else if (kind == "exprs") {
-    // straight-line macro text: every block goes through the grammar
+  } else if (kind == "exprs" || kind == "exprsngc") {
+    // straight-line macro text: every block goes through the grammar (2+SIN: never a division
+    // by zero)
+    const bool ngc = kind == "exprsngc";
     for (long i = 3; i < n - 1; ++i) {
       if (i % 2 == 0)
-        std::printf("#%ld=[#%ld+%ld.5]*2/[1+SIN[%ld]]\n", 100 + i % 50, 100 + (i + 7) % 50, i % 97,
-                    i % 360);
+        std::printf("#%ld=%s[#%ld+%ld.5]*2/[2+SIN[%ld]]%s\n", 100 + i % 50, ngc ? "[" : "",
+                    100 + (i + 7) % 50, i % 97, i % 360, ngc ? "]" : "");
       else
         std::printf("G1 X[#%ld MOD 200] Y[[%ld MOD 200]-100] F1000\n", 100 + i % 50, i);
     }

@@ -28,6 +28,11 @@ public:
   bool next(ir::Block& out) override { return reader_.next(out); }
   bool sawInput() const override { return reader_.sawInput(); }
   std::size_t failedBlocks() const override { return reader_.stats().failed; }
+  bool canReadInParts() const override { return reader_.canReadInParts(); }
+  void startAt(std::uint64_t offset, std::uint32_t line) override { reader_.startAt(offset, line); }
+  void stopAt(std::uint64_t offset) override { reader_.stopAt(offset); }
+  std::optional<std::uint64_t> stoppedAt() const override { return reader_.stoppedAt(); }
+  bool stateless() const override { return reader_.stateless(); }
 
 private:
   nct::Reader reader_;

@@ -119,46 +119,24 @@ ir::Stmt& BlockBuilder::newStmt(ir::StmtKind kind, std::size_t pos, std::size_t 
   return s;
 }
 
-namespace {
-bool isDefault(const ir::Expr& e) {
-  return e.kind == ir::ExprKind::Number && e.op == ir::Op::Add && e.func == ir::Func::Sin &&
-         !e.prmHasBit && !e.prmHasIndex && e.number == 0 && !std::signbit(e.number) &&
-         e.name.empty() && e.args.empty() && e.range.begin.file == 0 && e.range.begin.line == 0 &&
-         e.range.begin.col == 0 && e.range.begin.offset == 0 && e.range.length == 0;
-}
+const ir::Expr detail::kNewExpr{};
 
+namespace {
 // A word of an earlier block made equal to a new ir::Word, keeping its strings' storage.
 void resetWord(ir::Word& w) {
   w.incremental = false;
   w.kind = ir::ValueKind::Number;
   w.number = 0;
   w.text.clear();
-  if (!isDefault(w.expr)) w.expr = ir::Expr{};
+  detail::resetExpr(w.expr);
   w.axisIndex.clear();
 }
 } // namespace
 
-void BlockBuilder::finish() {
-  if (reuse_) out_.words.resize(words_);
-}
-
-namespace {
-// The word newWord fills: a new one, or with reuse the next word of the block before, reset.
-// Inline, so the fast path's literalWord does not pay a call per word.
-inline ir::Word& wordSlot(std::vector<ir::Word>& words, bool reuse, std::size_t& used) {
-  if (!reuse) return words.emplace_back();
-  ++used;
-  if (used <= words.size()) {
-    ir::Word& w = words[used - 1];
-    resetWord(w);
-    return w;
-  }
-  return words.emplace_back();
-}
-} // namespace
-
 ir::Word& BlockBuilder::newWord(std::string_view address, std::size_t pos, std::size_t len) {
-  ir::Word& w = wordSlot(out_.words, reuse_, words_);
+  bool reused = false;
+  ir::Word& w = nextWord(reused);
+  if (reused) resetWord(w);
   if (address.size() == 1 && w.address.size() == 1)
     w.address[0] = address[0]; // the usual case of a reused word: one letter for another
   else
@@ -177,22 +155,6 @@ void BlockBuilder::literalWord(std::string_view address, std::size_t pos, std::s
   const std::size_t numPos = pos + len - digits.size();
   double v = number(digits, numPos);
   w.number = negative ? -v : v;
-  if (signText) w.text.push_back(signText);
-  w.text.append(digits);
-}
-
-void BlockBuilder::literalWord(char letter, std::size_t pos, std::size_t len, bool incremental,
-                               char signText, std::string_view digits, double value) {
-  ir::Word& w = wordSlot(out_.words, reuse_, words_); // newWord's steps, inline
-  if (w.address.size() == 1)
-    w.address[0] = letter;
-  else
-    w.address.assign(1, letter);
-  w.range = range(pos, len);
-  w.order = static_cast<std::uint32_t>(pos);
-  w.incremental = incremental;
-  w.kind = ir::ValueKind::Number;
-  w.number = signText == '-' ? -value : value;
   if (signText) w.text.push_back(signText);
   w.text.append(digits);
 }

@@ -2,6 +2,7 @@
 // plain word-address blocks and the ANTLR path) go through it, so they cannot disagree on how
 // a piece becomes IR.
 #pragma once
+#include <algorithm>
 #include <string_view>
 
 #include "diag/diagnostic.h"
@@ -18,7 +19,9 @@ public:
   BlockBuilder(const front::RawBlock& raw, ir::Block& out, diag::Engine& diags,
                bool reuseWords = false);
   /// Ends a block built with reuseWords.
-  void finish();
+  void finish() {
+    if (reuse_ && words_ != out_.words.size()) out_.words.resize(words_);
+  }
 
   /// `/` or `/n` at pos; digits empty for a bare `/`.
   void skip(std::size_t pos, std::size_t len, std::string_view digits);
@@ -30,9 +33,11 @@ public:
   void literalWord(std::string_view address, std::size_t pos, std::size_t len, bool incremental,
                    char sign, std::string_view digits);
   /// The same, for digits of at most 15 digits whose value the caller computed exactly (the
-  /// same double front::decimalValue gives): such a number never has too many digits.
-  void literalWord(char letter, std::size_t pos, std::size_t len, bool incremental, char sign,
-                   std::string_view digits, double value);
+  /// same double front::decimalValue gives): such a number never has too many digits. `text`
+  /// is the value as written: the sign, if any, and the digits with no blank between. Inline:
+  /// the fast path's every word.
+  void literalWord(char letter, std::size_t pos, std::size_t len, bool incremental, bool negative,
+                   std::string_view text, double value);
   /// A comment whose '(' is at pos and ')' at pos+len-1.
   void comment(std::size_t pos, std::size_t len);
 
@@ -49,6 +54,14 @@ public:
   void fail() { ok_ = false; }
 
 private:
+  /// The next word: a new one, or with reuse the next word of the block before (reused true),
+  /// whose fields still hold that block's.
+  ir::Word& nextWord(bool& reused) {
+    reused = reuse_ && words_ < out_.words.size();
+    if (reuse_) ++words_;
+    return reused ? out_.words[words_ - 1] : out_.words.emplace_back();
+  }
+
   const front::RawBlock& raw_;
   ir::Block& out_;
   diag::Engine& diags_;
@@ -56,6 +69,51 @@ private:
   bool reuse_ = false;
   std::size_t words_ = 0; // with reuse_: words of this block so far
 };
+
+namespace detail {
+/// What a reused word's expression is made equal to: a new ir::Expr.
+extern const ir::Expr kNewExpr;
+
+/// e made equal to a new ir::Expr; without heap parts to drop (a literal word's expression was
+/// never set: the usual case) field by field, cheaper than building one and moving it in.
+inline void resetExpr(ir::Expr& e) {
+  if (!e.name.empty() || !e.args.empty()) {
+    e = ir::Expr{};
+    return;
+  }
+  e.kind = kNewExpr.kind;
+  e.op = kNewExpr.op;
+  e.func = kNewExpr.func;
+  e.prmHasBit = kNewExpr.prmHasBit;
+  e.prmHasIndex = kNewExpr.prmHasIndex;
+  e.number = kNewExpr.number;
+  e.range = kNewExpr.range;
+}
+} // namespace detail
+
+inline void BlockBuilder::literalWord(char letter, std::size_t pos, std::size_t len,
+                                      bool incremental, bool negative, std::string_view text,
+                                      double value) {
+  bool reused = false;
+  ir::Word& w = nextWord(reused);
+  if (reused) { // the fields below set the rest
+    detail::resetExpr(w.expr);
+    if (!w.axisIndex.empty()) w.axisIndex.clear();
+  }
+  if (w.address.size() == 1)
+    w.address[0] = letter;
+  else
+    w.address.assign(1, letter);
+  w.range = range(pos, len);
+  w.order = static_cast<std::uint32_t>(pos);
+  w.incremental = incremental;
+  w.kind = ir::ValueKind::Number;
+  w.number = negative ? -value : value;
+  if (w.text.size() == text.size()) // as long as the word's before (CAM output): in place
+    std::copy(text.begin(), text.end(), w.text.begin());
+  else
+    w.text.assign(text);
+}
 
 /// Whole units of a number token such as "0012" or "12.": false if it has a fraction.
 bool wholeNumber(std::string_view digits, std::int64_t& value);

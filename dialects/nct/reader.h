@@ -27,6 +27,13 @@ public:
   bool next(ir::Block& out);
   const ReaderStats& stats() const { return stats_; }
   bool sawInput() const { return bytes_.sawAnyByte(); }
+  /// Reading a part of the file (BlockSource::startAt and the rest).
+  bool canReadInParts() const { return !bytes_.converts(); }
+  void startAt(std::uint64_t offset, std::uint32_t line) { bytes_.startAt(offset, line); }
+  void stopAt(std::uint64_t offset) { bytes_.stopAt(offset); }
+  std::optional<std::uint64_t> stoppedAt() const { return bytes_.stoppedAt(); }
+  /// No G10 data records open: reading on is reading a new source from here.
+  bool stateless() const { return !dataMode_; }
   /// Disable the fast path (tests compare both paths).
   void setFastPath(bool on) { fastPath_ = on; }
 

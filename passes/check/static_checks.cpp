@@ -26,6 +26,7 @@ void StaticChecker::block(const ir::Block& b) {
   if (b.kind == ir::BlockKind::ProgramStart) {
     // `%` opens (and by Fanuc habit may close) a tape; between blocks it is an error
     if (blocks_ > 0 && !percentAfterStart_) percentAfterStart_ = b.range;
+    if (blocks_ == 0) startBeforeBlocks_ = true;
     return;
   }
   if (percentAfterStart_ && !b.empty()) {
@@ -50,7 +51,23 @@ void StaticChecker::block(const ir::Block& b) {
   words(b);
 }
 
-void StaticChecker::literal(const ir::Word& w, const AddressSpec& spec) {
+namespace {
+// A whole number by one conversion, where that is exact (no library call for floor).
+bool plainlyWhole(double v) {
+  return std::fabs(v) < 1e15 && v == static_cast<double>(static_cast<std::int64_t>(v));
+}
+} // namespace
+
+// The usual word passes at a glance; one that may not is looked at by literalFindings.
+inline void StaticChecker::literal(const ir::Word& w, const AddressSpec& spec) {
+  const double v = w.number;
+  if ((spec.decimal || plainlyWhole(v)) && (spec.sign || !std::signbit(v)) && v >= spec.min &&
+      v <= spec.max)
+    return;
+  literalFindings(w, spec);
+}
+
+void StaticChecker::literalFindings(const ir::Word& w, const AddressSpec& spec) {
   const double v = w.number;
   if (!spec.decimal && v != std::floor(v)) {
     diags_.error(diag::code::SyntaxError, w.range,
@@ -77,17 +94,23 @@ void StaticChecker::words(const ir::Block& b) {
         for (int c : profile_.macroCallGCodes10)
           callBlock |= *t == c;
 
-  std::array<int, 64> groupSeen{}; // modal groups used in this block
+  std::uint64_t groupSeen = 0; // modal groups used in this block, by bit
   int gCount = 0, mCount = 0, exclusiveM = 0;
   auto& counts = wordCounts_; // a member: its capacity serves every block
   counts.clear();
-  std::array<int, 26> letterCounts{}; // one-letter addresses, the usual words, by index
-  auto countOf = [&](std::string_view a) -> int& {
-    if (a.size() == 1 && a[0] >= 'A' && a[0] <= 'Z') return letterCounts[a[0] - 'A'];
+  std::uint32_t lettersSeen = 0; // one-letter addresses, the usual words, by bit
+  // true for an address written before in this block
+  auto again = [&](std::string_view a) {
+    if (a.size() == 1 && a[0] >= 'A' && a[0] <= 'Z') {
+      const std::uint32_t bit = std::uint32_t{1} << (a[0] - 'A');
+      const bool seen = lettersSeen & bit;
+      lettersSeen |= bit;
+      return seen;
+    }
     for (auto& [addr, n] : counts)
-      if (addr.size() == a.size() && (a.size() == 1 ? addr[0] == a[0] : addr == a)) return n;
-    counts.emplace_back(a, 0);
-    return counts.back().second;
+      if (addr.size() == a.size() && (a.size() == 1 ? addr[0] == a[0] : addr == a)) return ++n > 1;
+    counts.emplace_back(a, 1);
+    return false;
   };
 
   if (callBlock) callArguments(b);
@@ -103,8 +126,7 @@ void StaticChecker::words(const ir::Block& b) {
                    fmt::format("the incremental operator I is not allowed after {}", w.address));
     }
     if (w.isLiteral()) literal(w, *spec);
-    int& n = countOf(w.address);
-    ++n;
+    const bool repeated = again(w.address);
     if (w.is('G')) {
       ++gCount;
       if (callBlock && gCount > 1) {
@@ -126,11 +148,13 @@ void StaticChecker::words(const ir::Block& b) {
       // U2 Z-10 X0.2 Y-0.1` positions at X30 Y10, then shifts by X0.2 Y-0.1 (fms3000.md §5.1)
       if (g->action == GAction::LevelDrillCycle) {
         counts.clear();
-        letterCounts.fill(0);
+        lettersSeen = 0;
       }
-      if (g->group != 0 && g->group < static_cast<int>(groupSeen.size()) &&
-          !profile_.lastOfModalGroupWins) {
-        if (groupSeen[g->group]++)
+      if (g->group > 0 && g->group < 64 && !profile_.lastOfModalGroupWins) {
+        const std::uint64_t bit = std::uint64_t{1} << g->group;
+        const bool seen = groupSeen & bit;
+        groupSeen |= bit;
+        if (seen)
           diags_.error(diag::code::ModalGroupConflict, w.range,
                        fmt::format("G{} is the second code of modal group {} in this block",
                                    formatNumber(w.number), g->group));
@@ -150,7 +174,7 @@ void StaticChecker::words(const ir::Block& b) {
                                      machine::mCodeList(profile_.exclusiveMCodes)));
       continue;
     }
-    if (n < 2 || spec->repeatable || callBlock) continue; // call blocks: see below
+    if (!repeated || spec->repeatable || callBlock) continue; // call blocks: see below
     diags_.error(diag::code::RepeatedAddress, w.range,
                  fmt::format("address {} appears twice in one block", w.address));
   }
@@ -233,6 +257,20 @@ void StaticChecker::statement(const ir::Stmt& s) {
   default:
     return;
   }
+}
+
+bool StaticChecker::join(StaticChecker&& next) {
+  // what a block's checks read of the blocks before: the open loops, a '%' waiting for the next
+  // block, and whether any block came before (a '%' after blocks is suspect)
+  if (!loops_.empty() || percentAfterStart_ || (blocks_ > 0 && next.startBeforeBlocks_))
+    return false;
+  startBeforeBlocks_ = startBeforeBlocks_ || (blocks_ == 0 && next.startBeforeBlocks_);
+  blocks_ += next.blocks_;
+  percentAfterStart_ = next.percentAfterStart_;
+  loops_ = std::move(next.loops_);
+  jumps_.insert(jumps_.end(), next.jumps_.begin(), next.jumps_.end());
+  labels_.merge(next.labels_);
+  return true;
 }
 
 void StaticChecker::finish(FileId file, bool hadBadBlocks) {

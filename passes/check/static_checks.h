@@ -20,10 +20,16 @@ public:
   /// End of the file: unclosed loops, missing GOTO targets, an empty program (unless blocks
   /// were there but failed to parse: hadBadBlocks).
   void finish(FileId file, bool hadBadBlocks);
+  /// Takes in the checks of the next part of the file, made by a new checker (gcx check on
+  /// several threads): true when they are exactly what this checker would have found reading
+  /// on; false, joining nothing, when they could depend on this checker's state (an open loop, a
+  /// pending '%', a '%' that comes after blocks).
+  bool join(StaticChecker&& next);
 
 private:
   void words(const ir::Block& b);
   void literal(const ir::Word& w, const AddressSpec& spec);
+  void literalFindings(const ir::Word& w, const AddressSpec& spec);
   void dataRecord(const ir::Block& b);
   void callArguments(const ir::Block& b);
   void statement(const ir::Stmt& s);
@@ -42,6 +48,7 @@ private:
   diag::Engine& diags_;
   std::size_t blocks_ = 0;
   std::optional<SourceRange> percentAfterStart_;
+  bool startBeforeBlocks_ = false; // a '%' came while blocks_ was 0 (join)
   std::vector<OpenLoop> loops_;
   std::vector<std::pair<std::string_view, int>> wordCounts_; // words(): per address, this block
   std::vector<Jump> jumps_;

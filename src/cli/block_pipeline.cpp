@@ -19,24 +19,28 @@ namespace gcx::cli {
 
 namespace {
 
-// The two steps of one block; both loops below use them, so they cannot disagree.
-bool passesChecks(const StreamStages& s, const ir::Block& block) {
+// The steps of one block; both loops below use them, so they cannot disagree. Reading a block
+// checks it and sorts its words; executing runs it with them.
+bool passesChecks(const StreamStages& s, const ir::Block& block, machine::SortedWords& sorted) {
   const std::size_t before = s.diags.errorCount();
   s.checker.block(block);
-  return s.diags.errorCount() == before;
+  if (s.diags.errorCount() != before) return false;
+  sorted.notLiteral = machine::sortWords(block, s.profile, sorted.words);
+  return true;
 }
 
-bool execute(const StreamStages& s, const ir::Block& block) {
+bool execute(const StreamStages& s, const ir::Block& block, machine::SortedWords& sorted) {
   motion::Provenance from;
   from.at = block.range.begin;
-  return s.interp.execute(block, from);
+  return s.interp.execute(block, from, &sorted);
 }
 
 void runSequential(const StreamStages& s) {
   ir::Block block;
+  machine::SortedWords sorted;
   while (s.source.next(block)) {
-    if (!passesChecks(s, block)) break;
-    if (!execute(s, block)) break;
+    if (!passesChecks(s, block, sorted)) break;
+    if (!execute(s, block, sorted)) break;
   }
 }
 
@@ -82,6 +86,7 @@ private:
 
 struct Item {
   ir::Block block;
+  machine::SortedWords sorted;         // block's words, sorted for the interpreter
   std::vector<diag::Diagnostic> diags; // reported while reading and checking this block
   bool failedCheck = false;
 };
@@ -128,7 +133,7 @@ private:
         takeNew(b.tail);
         return false;
       }
-      it.failedCheck = !passesChecks(s_, it.block);
+      it.failedCheck = !passesChecks(s_, it.block, it.sorted);
       takeNew(it.diags);
       ++b.size;
       if (it.failedCheck) return false;
@@ -186,7 +191,7 @@ void runThreaded(const StreamStages& s) {
     for (std::size_t i = 0; i < b.size && running; ++i) {
       Item& it = b.items[i];
       replay(s.diags, it.diags);
-      running = !it.failedCheck && execute(s, it.block);
+      running = !it.failedCheck && execute(s, it.block, it.sorted);
     }
     if (running && b.endOfInput) replay(s.diags, b.tail);
     empty.push(std::move(*got));

@@ -9,7 +9,8 @@
 
 namespace gcx {
 class BlockSource;
-}
+struct Profile;
+} // namespace gcx
 namespace gcx::check {
 class StaticChecker;
 }
@@ -23,11 +24,13 @@ struct StreamStages {
   BlockSource& source;
   check::StaticChecker& checker;
   machine::Interpreter& interp;
-  diag::Engine& diags; // the engine every stage reports to
+  diag::Engine& diags;    // the engine every stage reports to
+  const Profile& profile; // the interpreter's: the reading stage sorts each block's words by it
 };
 
 /// Runs blocks until the input ends, a block fails a static check (it is not executed) or the
-/// interpreter stops. jobs > 1 runs the reader on a thread of its own.
+/// interpreter stops. jobs > 1 runs the reader on a thread of its own; there it also sorts each
+/// block's words for the interpreter (machine::SortedWords), as one job does before each block.
 void runBlocks(const StreamStages& s, unsigned jobs);
 
 /// The default for --jobs: 2 when the machine has more than one core, else 1.

@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 #include <iostream>
 
+#include "cli/check_in_parts.h"
 #include "cli/commands.h"
 #include "cli/session.h"
 #include "passes/check/static_checks.h"
@@ -17,13 +18,9 @@ int runCheck(const std::vector<std::string>& files, const CommonOptions& opt) {
       continue;
     }
     check::StaticChecker checker(s.dialect().profile(), s.diags());
-    ir::Block block;
-    std::size_t blocks = 0;
-    while (s.source().next(block)) {
-      checker.block(block);
-      ++blocks;
-    }
-    checker.finish(s.file(), s.source().failedBlocks() > 0);
+    const CheckedBlocks read = checkBlocks(s, checker, opt.jobs);
+    const std::size_t blocks = read.blocks;
+    checker.finish(s.file(), read.failed > 0);
     const std::size_t errors = s.diags().errorCount(), warnings = s.diags().warningCount();
     s.flushDiagnostics();
     if (!opt.json)

@@ -200,7 +200,7 @@ bool executeProgram(Session& s, const CommonOptions& opt, const machine::Setup& 
   limitMachine(interp, opt, programSize(s));
   interp.setKeepCompensation(opt.keepCompensation);
   interp.setBlockObserver(std::move(onBlock));
-  runBlocks(StreamStages{s.source(), checker, interp, s.diags()}, opt.jobs);
+  runBlocks(StreamStages{s.source(), checker, interp, s.diags(), s.dialect().profile()}, opt.jobs);
   if (s.diags().hasErrors()) return false;
   if (!interp.ended()) {
     // drain the rest for static errors (GOTO targets, loops) only when the program ran out

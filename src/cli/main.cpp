@@ -71,6 +71,11 @@ int main(int argc, char** argv) {
   CLI::App* check = app.add_subcommand("check", "syntax and static checks");
   check->add_option("FILE", checkFiles, "program files")->required();
   addCommon(check);
+  check
+      ->add_option("--jobs", common.jobs,
+                   "threads: 2 reads the two halves of a large file at once, 1 reads it in one "
+                   "(default: 2 on a machine with 2+ cores)")
+      ->check(CLI::Range(1, 2));
 
   std::string fmtFile, fmtOut;
   CLI::App* fmt = app.add_subcommand("fmt", "print a program back as normalised text");

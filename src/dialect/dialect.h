@@ -1,6 +1,7 @@
 // A dialect as the rest of gcx sees it: its profile, its lexical rules, a streaming block source
 // and a program-level emitter. dialects/registry.cpp lists them.
 #pragma once
+#include <cstdint>
 #include <istream>
 #include <memory>
 #include <optional>
@@ -25,6 +26,20 @@ public:
   virtual bool sawInput() const = 0;
   /// Blocks that had errors and were skipped.
   virtual std::size_t failedBlocks() const = 0;
+
+  // Reading one file in parts on several threads (gcx check, cli/check_in_parts.h), for a source
+  // that can: it starts at a block boundary and stops before a block that begins past a cut.
+  virtual bool canReadInParts() const { return false; }
+  /// Before the first next(): the stream stands at byte `offset`, the start of line `line`.
+  virtual void startAt(std::uint64_t /*offset*/, std::uint32_t /*line*/) {}
+  /// next() returns false at the first block boundary at or after `offset`; 0: at the end.
+  virtual void stopAt(std::uint64_t /*offset*/) {}
+  /// After next() returned false: the offset of the boundary it stopped at, or nothing when the
+  /// input ended or failed.
+  virtual std::optional<std::uint64_t> stoppedAt() const { return std::nullopt; }
+  /// True when reading on from here reads what a new source started here would (no state, such
+  /// as NCT's G10 data records, carries over).
+  virtual bool stateless() const { return false; }
 };
 
 struct Dialect {

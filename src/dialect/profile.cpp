@@ -14,14 +14,15 @@ void Profile::index() {
   for (std::size_t i = gcodes.size(); i-- > 0;) // the first row of a code wins, as in gcode()
     if (const int t = gcodes[i].code10; t >= 0 && t % 10 == 0 && t / 10 < 256)
       wholeGCodes_[static_cast<std::size_t>(t / 10)] = static_cast<int>(i + 1);
+  actions_.fill(0);
+  for (const GCodeSpec& g : gcodes) {
+    const auto bit = static_cast<unsigned>(g.action);
+    actions_[bit / 64] |= std::uint64_t{1} << (bit % 64);
+  }
   indexed_ = true;
 }
 
-const AddressSpec* Profile::address(std::string_view a) const {
-  if (a.size() == 1 && a[0] >= 'A' && a[0] <= 'Z') {
-    const int slot = letters_[a[0] - 'A'];
-    return slot ? &addresses[slot - 1] : nullptr;
-  }
+const AddressSpec* Profile::addressNamed(std::string_view a) const {
   for (const AddressSpec& s : addresses)
     if (s.address == a) return &s;
   return nullptr;
@@ -42,11 +43,7 @@ std::optional<int> gcodeTenths(double value) {
   return static_cast<int>(r);
 }
 
-const GCodeSpec* Profile::gcode(double value) const {
-  if (indexed_ && value >= 0 && value < 256 && value == static_cast<int>(value)) {
-    const int slot = wholeGCodes_[static_cast<std::size_t>(value)];
-    return slot ? &gcodes[static_cast<std::size_t>(slot - 1)] : nullptr;
-  }
+const GCodeSpec* Profile::gcodeByTenths(double value) const {
   auto t = gcodeTenths(value);
   if (!t) return nullptr;
   for (const GCodeSpec& g : gcodes)

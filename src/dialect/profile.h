@@ -218,15 +218,39 @@ struct Profile {
   std::vector<CycleMacro> cycleMacros;
   const CycleMacro* cycleMacro(std::int64_t program) const;
 
-  const AddressSpec* address(std::string_view a) const;
+  /// Inline for a single letter: the static checks ask it for every word.
+  const AddressSpec* address(std::string_view a) const {
+    if (a.size() == 1 && a[0] >= 'A' && a[0] <= 'Z') {
+      const int slot = letters_[a[0] - 'A'];
+      return slot ? &addresses[slot - 1] : nullptr;
+    }
+    return addressNamed(a);
+  }
   /// Builds the lookup tables; call once after filling the vectors.
   void index();
-  const GCodeSpec* gcode(double value) const;
+  /// True if a G code of the table has the action (before index(): true, not knowing), so that
+  /// a rule for an action the dialect lacks is not looked for in every block.
+  bool defines(GAction a) const {
+    const auto bit = static_cast<unsigned>(a);
+    return !indexed_ || ((actions_[bit / 64] >> (bit % 64)) & 1u);
+  }
+  /// Inline for the whole codes G0-G255 of the table, the codes of nearly every block.
+  const GCodeSpec* gcode(double value) const {
+    if (indexed_ && value >= 0 && value < 256 && value == static_cast<int>(value)) {
+      const int slot = wholeGCodes_[static_cast<std::size_t>(value)];
+      return slot ? &gcodes[static_cast<std::size_t>(slot - 1)] : nullptr;
+    }
+    return gcodeByTenths(value);
+  }
 
 private:
+  const AddressSpec* addressNamed(std::string_view a) const;
+  const GCodeSpec* gcodeByTenths(double value) const;
+
   std::array<int, 26> letters_{}; // index+1 into addresses of single letters (0: none)
   // index+1 into gcodes of the whole codes G0-G255 (0: none), the codes of nearly every block
   std::array<int, 256> wholeGCodes_{};
+  std::array<std::uint64_t, 4> actions_{}; // the actions of the table's codes, as bits
   bool indexed_ = false;
 };
 

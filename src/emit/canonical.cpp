@@ -15,7 +15,7 @@ namespace {
 // What ostream::write does for a good stream that is neither tied nor unit-buffered (a file,
 // a string): hand the line to its buffer in one call. Its sentry object per line cost more
 // than the copy.
-void writeLine(std::ostream& out, const std::string& line) {
+void writeLine(std::ostream& out, std::string_view line) {
   const auto n = static_cast<std::streamsize>(line.size());
   if (!out.good() || out.tie() || (out.flags() & std::ios::unitbuf)) {
     out.write(line.data(), n);
@@ -32,11 +32,17 @@ CanonicalEmitter::CanonicalEmitter(std::ostream& out, CanonicalOptions opt)
 // the output budget (--max-output) still sees every line as soon as it is complete.
 void CanonicalEmitter::begin(std::string_view code) {
   line_.clear();
-  line_ += code;
+  line_.append(code);
 }
 
 void CanonicalEmitter::word(char letter, double v) {
-  motion::appendWord(line_, letter, v, 6);
+  if (char* end = motion::putWord(line_.room(motion::kWordRoom), letter, v, 6)) {
+    line_.commit(end);
+    return;
+  }
+  std::string text; // a number beyond the integer fast path
+  motion::appendWord(text, letter, v, 6);
+  line_.append(text);
 }
 
 void CanonicalEmitter::xyz(const motion::Vec3& p) {
@@ -60,13 +66,13 @@ void CanonicalEmitter::end(const motion::Event& e) {
       chain += fmt::format(", in {}", it->what);
     if (at.line != lastSource_.line || at.file != lastSource_.file || chain != lastChain_) {
       std::string where = opt_.fileName ? opt_.fileName(at.file) : std::string("line");
-      fmt::format_to(std::back_inserter(line_), " ({}:{}{})", where, at.line, chain);
+      line_.append(fmt::format(" ({}:{}{})", where, at.line, chain));
       lastSource_ = at;
       lastChain_ = std::move(chain);
     }
   }
-  line_ += '\n';
-  writeLine(out_, line_);
+  line_.push_back('\n');
+  writeLine(out_, line_.view());
 }
 
 void CanonicalEmitter::line(std::string_view text, const motion::Event& e) {
@@ -139,7 +145,7 @@ void CanonicalEmitter::event(const motion::Event& e) {
     extraWords(e.extraEnd);
     for (int a : {0, 1, 2})
       if (a == ax.first || a == ax.second) word(letters[a], d[a]);
-    if (e.turns > 0) fmt::format_to(std::back_inserter(line_), " P{}", e.turns + 1);
+    if (e.turns > 0) line_.append(fmt::format(" P{}", e.turns + 1));
     word('F', e.feed);
     end(e);
     return;

@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "emit/line_buffer.h"
 #include "motion/event.h"
 #include "motion/interpolator.h"
 
@@ -49,7 +50,7 @@ private:
   double spindleSpeed_ = 0;
   SourceLoc lastSource_;
   std::string lastChain_;
-  std::string line_; // the line being composed
+  LineBuffer line_; // the line being composed
 };
 
 } // namespace gcx::emit

@@ -73,8 +73,9 @@ void BlockReader::classifyForLexText() {
     lexClasses_[static_cast<unsigned char>(rules_.bracketComment->close)] = CommentClose;
   }
   for (unsigned c = 0; c < 256; ++c)
-    scanClasses_[c] =
-        static_cast<unsigned char>(classes_[c] | (lexClasses_[c] == PlainText ? 0 : kLexWork));
+    scanClasses_[c] = static_cast<unsigned char>(classes_[c] | (lexClasses_[c] == PlainText ? 0
+                                                                : c == '\r' ? kCarriageReturn
+                                                                            : kLexWork));
 }
 
 bool BlockReader::fill() {
@@ -113,9 +114,25 @@ void BlockReader::newLine() {
   if (input_.converts()) offsetShift_ = input_.rawLineStarts()[rawLine_++] - offset_;
 }
 
+void BlockReader::startAt(std::uint64_t offset, std::uint32_t line) {
+  offset_ = lineStart_ = offset;
+  line_ = line;
+  curBegin_ = SourceLoc{file_, line_, 1, offset_};
+}
+
+void BlockReader::stopAt(std::uint64_t offset) {
+  stopAt_ = offset == 0 ? UINT64_MAX : offset;
+  stopped_ = false;
+}
+
+std::optional<std::uint64_t> BlockReader::stoppedAt() const {
+  if (!stopped_ || fatal_) return std::nullopt;
+  return curBegin_.offset;
+}
+
 bool BlockReader::next(RawBlock& out) {
   for (;;) {
-    if (fatal_) return false;
+    if (fatal_ || stopped_) return false;
     if (pos_ >= buf_.size() && !fill()) {
       if (fatal_) return false;
       if (inComment_) {
@@ -134,14 +151,23 @@ bool BlockReader::next(RawBlock& out) {
     const char* data = buf_.data();
     const std::size_t size = buf_.size();
     while (pos_ < size) {
-      // the bulk of a program: a run of bytes without meaning to the reader, copied at once
-      std::size_t run = pos_, lexWork = 0;
-      for (; run < size; ++run) {
-        const unsigned char k = scanClasses_[static_cast<unsigned char>(data[run])];
-        if ((k & ~kLexWork) != Plain) break;
-        lexWork += k >> 7;
+      // the bulk of a program: a run of bytes without meaning to the reader, copied at once;
+      // their classes ORed eight at a time while none of the eight means something
+      const auto* bytes = reinterpret_cast<const unsigned char*>(data);
+      const unsigned char* scan = scanClasses_.data();
+      std::size_t run = pos_;
+      unsigned char lex = 0;
+      for (; run + 8 <= size; run += 8) {
+        const unsigned char eight = scan[bytes[run]] | scan[bytes[run + 1]] | scan[bytes[run + 2]] |
+                                    scan[bytes[run + 3]] | scan[bytes[run + 4]] |
+                                    scan[bytes[run + 5]] | scan[bytes[run + 6]] |
+                                    scan[bytes[run + 7]];
+        if (eight & kCutter) break;
+        lex |= eight;
       }
-      curLexWork_ += lexWork;
+      for (; run < size && !(scan[bytes[run]] & kCutter); ++run)
+        lex |= scan[bytes[run]];
+      curLex_ |= lex;
       if (run > pos_) {
         append(data + pos_, run - pos_);
         offset_ += run - pos_;
@@ -166,7 +192,9 @@ bool BlockReader::next(RawBlock& out) {
           inComment_ = inLineComment_ = false;
           const bool got = finishBlock(out);
           curBegin_ = SourceLoc{file_, line_, 1, offset_ + offsetShift_};
+          stopped_ = offset_ >= stopAt_; // the next block begins at or after the cut
           if (got) return true;
+          if (stopped_) return false;
           continue;
         }
         if (k == LineFeed) {
@@ -182,7 +210,7 @@ bool BlockReader::next(RawBlock& out) {
         }
       }
       append(&c, 1);
-      ++curLexWork_; // a byte of meaning to the cutter means something to normalize() too
+      curLex_ |= kLexWork; // a byte of meaning to the cutter means something to normalize() too
     }
   }
 }
@@ -199,7 +227,7 @@ bool BlockReader::finishBlock(RawBlock& out) {
     curBreaks_.clear();
     curLineOffsets_.clear();
     overflow_ = false;
-    curLexWork_ = 0;
+    curLex_ = 0;
   };
   if (overflow_) {
     diags_.error(
@@ -208,11 +236,10 @@ bool BlockReader::finishBlock(RawBlock& out) {
     reset();
     return false;
   }
-  if (!cur_.empty() && cur_.back() == '\r') {
-    cur_.pop_back();
-    --curLexWork_; // it was counted: a CR is never PlainText
-  }
-  const bool lexWork = curLexWork_ > 0;
+  if (!cur_.empty() && cur_.back() == '\r') cur_.pop_back();
+  // a CR other than the final one of CR LF is work (a lone CR)
+  const bool lexWork =
+      (curLex_ & kLexWork) || ((curLex_ & kCarriageReturn) && cur_.find('\r') != std::string::npos);
   if (isBlank(cur_)) {
     reset();
     return false;

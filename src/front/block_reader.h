@@ -4,7 +4,9 @@
 // prepares the ASCII text the parsers read. Holds one block in memory at a time.
 #pragma once
 #include <array>
+#include <cstdint>
 #include <istream>
+#include <optional>
 #include <string>
 
 #include "diag/diagnostic.h"
@@ -26,6 +28,15 @@ public:
   /// The next non-blank block; false at end of input or after a fatal input error.
   bool next(RawBlock& out);
   bool sawAnyByte() const { return input_.sawAnyByte(); }
+
+  /// Reading a part of the file (BlockSource::startAt): the stream stands at byte `offset`, the
+  /// start of line `line`, before any block. Not for converted text (converts()).
+  void startAt(std::uint64_t offset, std::uint32_t line);
+  /// next() returns false at the first block boundary at or after `offset` (0: none).
+  void stopAt(std::uint64_t offset);
+  /// After next() returned false: the boundary it stopped at, or nothing at the end or an error.
+  std::optional<std::uint64_t> stoppedAt() const;
+  bool converts() const { return input_.converts(); }
 
 private:
   // what a byte means to the block cutter
@@ -67,14 +78,18 @@ private:
   std::array<ByteClass, 256> classes_{};
   std::array<signed char, 128> asciiAlias_{}; // index into rules_.signAliases, or -1
   std::array<LexClass, 256> lexClasses_{};
-  // classes_ with kLexWork set where the byte is not PlainText: the cutting loop counts those,
-  // so a block without any skips normalize()'s pass over its bytes
+  // classes_ with kLexWork set where the byte is not PlainText (kCarriageReturn for a CR): the
+  // cutting loop ORs them, so a block without any skips normalize()'s pass over its bytes
   static constexpr unsigned char kLexWork = 0x80;
+  static constexpr unsigned char kCarriageReturn = 0x40; // a CR at the block's end is no work
+  static constexpr unsigned char kCutter = 0x3F;         // the ByteClass bits
   std::array<unsigned char, 256> scanClasses_{};
 
   std::string buf_;
   std::size_t pos_ = 0;
   bool fatal_ = false;
+  std::uint64_t stopAt_ = UINT64_MAX; // stopAt()
+  bool stopped_ = false;
 
   // position of the next byte to consume, in the decoded text
   std::uint64_t offset_ = 0;
@@ -94,7 +109,7 @@ private:
   bool inLineComment_ = false; // after a line-comment marker
   SourceLoc commentLoc_;
   bool overflow_ = false;
-  std::size_t curLexWork_ = 0; // bytes of cur_ normalize() may change (an upper bound)
+  unsigned char curLex_ = 0; // scanClasses_ of cur_'s bytes ORed: what normalize() may change
 };
 
 } // namespace gcx::front

@@ -48,4 +48,11 @@ private:
 /// Sorts the words; returns the first word that is not a literal (to be reported), or null.
 const ir::Word* sortWords(const ir::Block& b, const Profile& profile, BlockWords& out);
 
+/// A block's words sorted ahead of its execution: a streaming run sorts them on the reader
+/// thread (cli/block_pipeline.h), sparing the interpreter's.
+struct SortedWords {
+  BlockWords words;
+  const ir::Word* notLiteral = nullptr; // what sortWords returned
+};
+
 } // namespace gcx::machine

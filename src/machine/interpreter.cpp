@@ -205,11 +205,16 @@ bool Interpreter::admitMotion(const motion::Event& e) {
   // beyond a kilometre-scale machine by far, and below what any output writes in full
   constexpr double kMaxCoordinate = 1e9;
   const auto writable = [&](double v) { return std::fabs(v) < kMaxCoordinate; };
-  const bool finite = e.start.allFinite() && e.end.allFinite() && e.center.allFinite() &&
-                      e.extraEnd.allFinite() && std::isfinite(e.feed);
-  if (!finite || !writable(e.end.x()) || !writable(e.end.y()) || !writable(e.end.z()) ||
-      !writable(e.center.x()) || !writable(e.center.y()) || !writable(e.center.z()) ||
-      e.extraEnd.cwiseAbs().maxCoeff() >= kMaxCoordinate || !writable(e.feed))
+  // the usual move at a glance: every value writable (a NaN fails each comparison), no branch
+  const bool usual =
+      (writable(e.end.x()) & writable(e.end.y()) & writable(e.end.z()) & writable(e.center.x()) &
+       writable(e.center.y()) & writable(e.center.z()) & writable(e.feed)) &&
+      (e.extraEnd.array().abs() < kMaxCoordinate).all() && e.start.allFinite();
+  const bool finite = usual || (e.start.allFinite() && e.end.allFinite() && e.center.allFinite() &&
+                                e.extraEnd.allFinite() && std::isfinite(e.feed));
+  if (!usual && (!finite || !writable(e.end.x()) || !writable(e.end.y()) || !writable(e.end.z()) ||
+                 !writable(e.center.x()) || !writable(e.center.y()) || !writable(e.center.z()) ||
+                 e.extraEnd.cwiseAbs().maxCoeff() >= kMaxCoordinate || !writable(e.feed)))
     return fail(diag::code::ValueOutOfRange, blockRange_,
                 finite ? fmt::format("the move reaches a coordinate or feed of magnitude 1e9 or "
                                      "more (machine frame, mm)")
@@ -259,9 +264,11 @@ void Interpreter::emitLine(Kind kind, const Vec3& to, const motion::Extra& extra
   emit(std::move(e));
 }
 
-bool Interpreter::execute(const ir::Block& block, const motion::Provenance& from) {
+bool Interpreter::execute(const ir::Block& block, const motion::Provenance& from,
+                          SortedWords* sorted) {
   if (ended_ || stopped_) return false;
   if (blockObserver_) blockObserver_(from);
+  presorted_ = sorted;
   setProvenance(from_, from);
   blockRange_ = block.range;
   blockMoves_ = 0;
@@ -271,22 +278,26 @@ bool Interpreter::execute(const ir::Block& block, const motion::Provenance& from
 }
 
 bool Interpreter::executeBlock(const ir::Block& block) {
+  // the words sorted beforehand belong to execute()'s block, not to one run inside this one
+  SortedWords* const sorted = std::exchange(presorted_, nullptr);
   if (block.kind == ir::BlockKind::ProgramStart) return true;
   if (skips(block.skipLevel)) return true;
   if (block.kind == ir::BlockKind::Data) return dataInput(BlockWords{}, block);
   if (!block.stmts.empty())
     return fail(diag::code::NotImplemented, block.stmts.front().range,
                 "macro statements need the macro expansion pass, which is not implemented yet");
-  for (const ir::Word& g : block.words) // FMS-3000 G81-G88: the words after the code are its own
-    if (g.is('G'))
-      if (const GCodeSpec* spec = profile_.gcode(g.number);
-          spec && spec->action == GAction::LevelDrillCycle)
-        return levelCycleBlock(block, g, *spec);
+  if (profile_.defines(GAction::LevelDrillCycle)) // FMS-3000 G81-G88: the words after the code
+    for (const ir::Word& g : block.words)         // are its own
+      if (g.is('G'))
+        if (const GCodeSpec* spec = profile_.gcode(g.number);
+            spec && spec->action == GAction::LevelDrillCycle)
+          return levelCycleBlock(block, g, *spec);
   if (const auto repeated = levelCycleRepeat(block)) return *repeated;
   if (const auto polar = polePolarBlock(block)) return *polar;
-  ReusedBlockWords reused;
-  BlockWords& w = reused.words();
-  if (const ir::Word* bad = sortWords(block, profile_, w))
+  std::optional<ReusedBlockWords> reused;
+  if (!sorted) reused.emplace();
+  BlockWords& w = sorted ? sorted->words : reused->words();
+  if (const ir::Word* bad = sorted ? sorted->notLiteral : sortWords(block, profile_, w))
     return fail(diag::code::ExpressionNotExpanded, bad->range,
                 fmt::format("the value of {} is an expression; expressions are evaluated by the "
                             "macro pass, which is not implemented yet",

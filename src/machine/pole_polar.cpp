@@ -28,6 +28,8 @@ bool isAxis(const ir::Word& w, std::string_view letters) {
 
 std::optional<bool> Interpreter::polePolarBlock(const ir::Block& block) {
   if (polarRewritten_) return std::nullopt;
+  // no pole set and no code to set one: nothing below applies (the loop finds no pole)
+  if (!pole_ && !profile_.defines(GAction::PolePolar)) return std::nullopt;
   const ir::Word* pole = nullptr;
   const ir::Word* otherTransform = nullptr; // G35 or G37 end polar mode
   const ir::Word* plane = nullptr;

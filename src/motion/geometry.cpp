@@ -26,18 +26,6 @@ const char* planeCode(Plane p) {
   return "G17";
 }
 
-PlaneAxes axesOf(Plane p) {
-  switch (p) {
-  case Plane::XY:
-    return {0, 1, 2};
-  case Plane::ZX:
-    return {2, 0, 1};
-  case Plane::YZ:
-    return {1, 2, 0};
-  }
-  return {0, 1, 2};
-}
-
 ArcGeometry::ArcGeometry(const Event& arc)
     : start_(arc.start), end_(arc.end), ax_(axesOf(arc.plane)), c1_(arc.center[ax_.first]),
       c2_(arc.center[ax_.second]), sign_(arc.clockwise ? -1 : 1) {

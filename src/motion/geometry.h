@@ -22,7 +22,18 @@ using Box3 = Eigen::AlignedBox3d;
 struct PlaneAxes {
   int first, second, normal;
 };
-PlaneAxes axesOf(Plane p);
+/// Inline: the interpreter asks it several times for every move.
+inline PlaneAxes axesOf(Plane p) {
+  switch (p) {
+  case Plane::XY:
+    return {0, 1, 2};
+  case Plane::ZX:
+    return {2, 0, 1};
+  case Plane::YZ:
+    return {1, 2, 0};
+  }
+  return {0, 1, 2};
+}
 /// The RS274/NGC code selecting the plane: "G17", "G18", "G19".
 const char* planeCode(Plane p);
 

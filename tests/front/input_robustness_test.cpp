@@ -60,6 +60,13 @@ TEST(InputRobustness, CrOfACrLfIsNotPartOfTheBlock) {
   EXPECT_EQ(p.blocks[1].range.length, 3u);
 }
 
+TEST(InputRobustness, LoneCrInsideACrLfLineIsWarned) {
+  // nct.md §1.1: blocks end at LF; a CR not followed by LF is reported where it stands (1:6),
+  // even when the line itself ends with CR LF, whose CR is no part of the block
+  Parsed p = parseNct("G0 X1\rY2\r\nM30\r\n");
+  EXPECT_EQ(p.warnings(), std::vector<std::string>{"1:6 GCXW04"});
+}
+
 TEST(InputRobustness, Utf8InCommentsIsAccepted) {
   Parsed p = parseNct("G0 X1 (\xD1\x84\xD1\x80\xD0\xB5\xD0\xB7\xD0\xB0)\nM30\n");
   EXPECT_TRUE(p.errors().empty()) << p.rendered();
