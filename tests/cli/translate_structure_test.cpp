@@ -287,6 +287,20 @@ TEST_F(TranslateStructure, NctMacroSpec_2_1_Wl4VariablesKeepTheirValuesInNct) {
                            "N20 M30\n");
 }
 
+// wl4.md §6.5: a false IF drops the rest of its block, a true one runs it after the words
+// before it (the later Z wins), so NCT jumps around the two forms of the block; X**2 with a
+// literal exponent is a product and 7 MOD 3 a constant, which NCT writes as such.
+TEST_F(TranslateStructure, Wl4Spec_6_5_AnIfInsideABlockBecomesTwoBranchesInNct) {
+  write("I.wl4", "%I\nG90 G0 X0 Y0 Z0\n#1=0\nN010 #1=(#1+1) G1 X(#1*10) Y(#1**2) F100\n"
+                 "IF (#1<4) N10\n#2=(7 MOD 3)\nG1 Z(-#2) IF (#2==1) Z-2\nM2\n%\n");
+  const CliResult r = gcx("translate I.wl4 --to nct -o I.nct");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(read("I.nct"), "O1\n(translated from I.wl4 [wl4] by gcx)\n#1=0\n#2=0\n"
+                           "G90 G0 X0 Y0 Z0\n#1=0\nN10 #1=[#1+1]\nG1 X[#1*10] Y[[#1*#1]] F100\n"
+                           "IF[#1 LT 4] GOTO 10\n#2=[1]\nIF[#2 NE 1] GOTO 9000\nG1 Z-2\n"
+                           "GOTO 9001\nN9000 G1 Z[-#2]\nN9001\nM2\n");
+}
+
 // L0702 to FMS-3000: program 07 (its leading zero kept, P07 is not P7), twice by G25.
 TEST_F(TranslateStructure, Fms3000Spec_1_3_Wl4LCallBecomesPCallOfItsDigits) {
   write("S.wl4", kWl4Call);
