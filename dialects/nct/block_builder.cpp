@@ -119,8 +119,6 @@ ir::Stmt& BlockBuilder::newStmt(ir::StmtKind kind, std::size_t pos, std::size_t 
   return s;
 }
 
-const ir::Expr detail::kNewExpr{};
-
 namespace {
 // A word of an earlier block made equal to a new ir::Word, keeping its strings' storage.
 void resetWord(ir::Word& w) {
@@ -128,7 +126,7 @@ void resetWord(ir::Word& w) {
   w.kind = ir::ValueKind::Number;
   w.number = 0;
   w.text.clear();
-  detail::resetExpr(w.expr);
+  ir::resetExpr(w.expr);
   w.axisIndex.clear();
 }
 } // namespace

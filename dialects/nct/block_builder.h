@@ -8,6 +8,7 @@
 #include "diag/diagnostic.h"
 #include "front/raw_block.h"
 #include "ir/block.h"
+#include "ir/new_expr.h"
 
 namespace gcx::nct {
 
@@ -70,41 +71,20 @@ private:
   std::size_t words_ = 0; // with reuse_: words of this block so far
 };
 
-namespace detail {
-/// What a reused word's expression is made equal to: a new ir::Expr.
-extern const ir::Expr kNewExpr;
-
-/// e made equal to a new ir::Expr; without heap parts to drop (a literal word's expression was
-/// never set: the usual case) field by field, cheaper than building one and moving it in.
-inline void resetExpr(ir::Expr& e) {
-  if (!e.name.empty() || !e.args.empty()) {
-    e = ir::Expr{};
-    return;
-  }
-  e.kind = kNewExpr.kind;
-  e.op = kNewExpr.op;
-  e.func = kNewExpr.func;
-  e.prmHasBit = kNewExpr.prmHasBit;
-  e.prmHasIndex = kNewExpr.prmHasIndex;
-  e.number = kNewExpr.number;
-  e.range = kNewExpr.range;
-}
-} // namespace detail
-
 inline void BlockBuilder::literalWord(char letter, std::size_t pos, std::size_t len,
                                       bool incremental, bool negative, std::string_view text,
                                       double value) {
   bool reused = false;
   ir::Word& w = nextWord(reused);
   if (reused) { // the fields below set the rest
-    detail::resetExpr(w.expr);
+    ir::resetExpr(w.expr);
     if (!w.axisIndex.empty()) w.axisIndex.clear();
   }
   if (w.address.size() == 1)
     w.address[0] = letter;
   else
     w.address.assign(1, letter);
-  w.range = range(pos, len);
+  raw_.writeRange(w.range, pos, len);
   w.order = static_cast<std::uint32_t>(pos);
   w.incremental = incremental;
   w.kind = ir::ValueKind::Number;

@@ -34,6 +34,19 @@ struct RawBlock {
   SourceRange rangeAt(std::size_t pos, std::size_t len) const {
     return SourceRange{locAt(pos), static_cast<std::uint32_t>(len)};
   }
+  /// to = rangeAt(pos, len), stored field by field: a whole SourceRange built in a temporary and
+  /// copied makes the copy's wide loads wait for the temporary's narrow stores, for every word.
+  void writeRange(SourceRange& to, std::size_t pos, std::size_t len) const {
+    if (!lineBreaks.empty()) {
+      to = rangeAt(pos, len);
+      return;
+    }
+    to.begin.file = begin.file;
+    to.begin.line = begin.line;
+    to.begin.col = static_cast<std::uint32_t>(pos + 1);
+    to.begin.offset = begin.offset + pos;
+    to.length = static_cast<std::uint32_t>(len);
+  }
   std::uint32_t lastLine() const {
     return begin.line + static_cast<std::uint32_t>(lineBreaks.size());
   }
