@@ -15,6 +15,21 @@ bool BlockWords::hasAxisWord() const {
   return false;
 }
 
+void BlockWords::clear() {
+  gWords.clear();
+  gCodes.clear();
+  axis = {};
+  uvw = {};
+  ijk = {};
+  extra = {};
+  r = f = s = t = h = d = p = q = l = e = nullptr;
+  m.clear();
+  chamfer = rounding = angle = nullptr;
+  other.clear();
+  letters = {};
+  actionBits = {};
+}
+
 const ir::Word* BlockWords::findPresentAction(GAction a) const {
   for (std::size_t i = 0; i < gCodes.size(); ++i)
     if (gCodes[i] && gCodes[i]->action == a) return gWords[i];
@@ -41,20 +56,7 @@ ReusedBlockWords::~ReusedBlockWords() {
 }
 
 const ir::Word* sortWords(const ir::Block& b, const Profile& profile, BlockWords& out) {
-  // a fresh BlockWords, but the lists keep their storage (out may be a ReusedBlockWords')
-  auto gWords = std::move(out.gWords);
-  auto gCodes = std::move(out.gCodes);
-  auto m = std::move(out.m);
-  auto other = std::move(out.other);
-  out = BlockWords{};
-  gWords.clear();
-  gCodes.clear();
-  m.clear();
-  other.clear();
-  out.gWords = std::move(gWords);
-  out.gCodes = std::move(gCodes);
-  out.m = std::move(m);
-  out.other = std::move(other);
+  out.clear(); // the lists keep their storage (out may be a ReusedBlockWords')
   for (const ir::Word& w : b.words) {
     if (w.kind != ir::ValueKind::Number && w.kind != ir::ValueKind::Path) return &w;
     if (w.address.size() != 1) {

@@ -32,6 +32,9 @@ struct BlockWords {
   const ir::Word* letter(char c) const { return c >= 'A' && c <= 'Z' ? letters[c - 'A'] : nullptr; }
 
   bool hasAxisWord() const;
+  /// As a new BlockWords, keeping the lists' storage. Every member above is named in it: a
+  /// member added must be added there (BlockWordsTest.ClearForgetsEveryWord).
+  void clear();
   /// The G code of this block with the given action, or null.
   /// Inline: the interpreter asks for dozens of actions per block, and most are absent.
   const ir::Word* findAction(GAction a) const {
@@ -47,12 +50,5 @@ private:
 
 /// Sorts the words; returns the first word that is not a literal (to be reported), or null.
 const ir::Word* sortWords(const ir::Block& b, const Profile& profile, BlockWords& out);
-
-/// A block's words sorted ahead of its execution: a streaming run sorts them on the reader
-/// thread (cli/block_pipeline.h), sparing the interpreter's.
-struct SortedWords {
-  BlockWords words;
-  const ir::Word* notLiteral = nullptr; // what sortWords returned
-};
 
 } // namespace gcx::machine
