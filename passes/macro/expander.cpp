@@ -143,7 +143,8 @@ bool Expander::step() {
 // (case folded in), then a bitmap of the folded byte pairs that start one, so a plain CAM program
 // costs one table lookup per byte and a marker's full compare runs only where its first two
 // letters stand (a `G1` is not the start of `G65`).
-bool mayNeedExpansion(const std::string& path, const Profile& profile) {
+bool mayNeedExpansion(const std::string& path, const Profile& profile, std::uint64_t begin,
+                      std::uint64_t end) {
   if (!profile.controlFlow) return false;
   const std::vector<std::string>& markers = profile.controlFlow->expansionMarkers;
   std::array<unsigned char, 256> fold{};
@@ -184,7 +185,9 @@ bool mayNeedExpansion(const std::string& path, const Profile& profile) {
     return false;
   };
   std::ifstream in(path, std::ios::binary);
-  std::string text; // the unscanned tail of the last chunk, then the next chunk
+  if (begin > 0) in.seekg(static_cast<std::streamoff>(begin));
+  std::string text;         // the unscanned tail of the last chunk, then the next chunk
+  std::uint64_t at = begin; // the file offset of text[0]
   std::size_t kept = 0;
   constexpr std::size_t kChunk = 1 << 16;
   for (;;) {
@@ -192,9 +195,13 @@ bool mayNeedExpansion(const std::string& path, const Profile& profile) {
     in.read(text.data() + kept, static_cast<std::streamsize>(kChunk));
     const auto got = static_cast<std::size_t>(in.gcount());
     text.resize(kept + got);
-    const bool last = got < kChunk;
-    // a marker that may run past the chunk waits for the next one
-    const std::size_t scanEnd = last ? text.size() : text.size() - (longest - 1);
+    const bool endOfFile = got < kChunk;
+    // a marker that may run past the chunk waits for the next one; with the bytes read, the
+    // markers that begin before `end` are all in view
+    std::size_t scanEnd = endOfFile ? text.size() : text.size() - (longest - 1);
+    const bool reachesEnd = at + scanEnd >= end;
+    if (reachesEnd) scanEnd = static_cast<std::size_t>(end - at);
+    const bool last = endOfFile || reachesEnd;
     const auto* bytes = reinterpret_cast<const unsigned char*>(text.data());
     for (std::size_t i = 0; i < scanEnd;) {
       // eight bytes of no interest (most of a CAM program's) pass with one test
@@ -214,6 +221,7 @@ bool mayNeedExpansion(const std::string& path, const Profile& profile) {
     }
     if (last) return false;
     text.erase(0, scanEnd);
+    at += scanEnd;
     kept = text.size();
   }
 }

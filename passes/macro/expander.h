@@ -7,6 +7,7 @@
 // blocks and the remap table), calls.cpp, modal_calls.cpp, configured_calls.cpp, loops.cpp,
 // jumps.cpp, variables.cpp and print.cpp.
 #pragma once
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
@@ -175,7 +176,9 @@ private:
 
 /// True if a program file may need the expansion pass (the dialect's expansion markers, or a
 /// variable or expression); plain files are run streaming instead. A cheap byte scan: false
-/// positives only cost memory.
-bool mayNeedExpansion(const std::string& path, const Profile& profile);
+/// positives only cost memory. Only markers that begin at file offsets in [begin, end) count,
+/// so two threads may scan the two halves of a file at once.
+bool mayNeedExpansion(const std::string& path, const Profile& profile, std::uint64_t begin = 0,
+                      std::uint64_t end = UINT64_MAX);
 
 } // namespace gcx::macro

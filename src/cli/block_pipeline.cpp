@@ -10,6 +10,7 @@
 #include <thread>
 #include <vector>
 
+#include "cli/packed_blocks.h"
 #include "diag/codes.h"
 #include "dialect/dialect.h"
 #include "machine/interpreter.h"
@@ -19,28 +20,25 @@ namespace gcx::cli {
 
 namespace {
 
-// The steps of one block; both loops below use them, so they cannot disagree. Reading a block
-// checks it and sorts its words; executing runs it with them.
-bool passesChecks(const StreamStages& s, const ir::Block& block, machine::SortedWords& sorted) {
+// The steps of one block; both loops below use them, so they cannot disagree. A block that fails
+// its static checks is not executed.
+bool passesChecks(const StreamStages& s, const ir::Block& block) {
   const std::size_t before = s.diags.errorCount();
   s.checker.block(block);
-  if (s.diags.errorCount() != before) return false;
-  sorted.notLiteral = machine::sortWords(block, s.profile, sorted.words);
-  return true;
+  return s.diags.errorCount() == before;
 }
 
-bool execute(const StreamStages& s, const ir::Block& block, machine::SortedWords& sorted) {
+bool execute(const StreamStages& s, const ir::Block& block) {
   motion::Provenance from;
   from.at = block.range.begin;
-  return s.interp.execute(block, from, &sorted);
+  return s.interp.execute(block, from);
 }
 
 void runSequential(const StreamStages& s) {
   ir::Block block;
-  machine::SortedWords sorted;
   while (s.source.next(block)) {
-    if (!passesChecks(s, block, sorted)) break;
-    if (!execute(s, block, sorted)) break;
+    if (!passesChecks(s, block)) break;
+    if (!execute(s, block)) break;
   }
 }
 
@@ -84,22 +82,35 @@ private:
   bool closed_ = false;
 };
 
-struct Item {
-  ir::Block block;
-  machine::SortedWords sorted;         // block's words, sorted for the interpreter
-  std::vector<diag::Diagnostic> diags; // reported while reading and checking this block
-  bool failedCheck = false;
-};
-
+// A run of blocks read and checked. Blocks in the common form travel packed (see
+// packed_blocks.h); the others whole, in slots reused from batch to batch.
 struct Batch {
-  std::vector<Item> items;
-  std::size_t size = 0;
-  bool endOfInput = false;
-  std::vector<diag::Diagnostic> tail; // reported by the read that found the end
+  struct Entry {
+    std::uint32_t index;   // in packed or whole
+    std::uint32_t diagEnd; // this block's diagnostics end here in diags (they begin where the
+                           // entry before's end)
+    bool packed;
+    bool failedCheck;
+  };
+  std::vector<Entry> entries;
+  PackedBlocks packed;
+  std::vector<ir::Block> whole;
+  std::size_t wholeUsed = 0;
+  std::vector<diag::Diagnostic> diags; // reported while reading and checking, in order
+  bool endOfInput = false;             // then the diagnostics after the last entry's are the
+                                       // read's that found the end
+
+  void clear() {
+    entries.clear();
+    packed.clear();
+    wholeUsed = 0;
+    diags.clear();
+    endOfInput = false;
+  }
 };
 
 // Blocks travel in batches, so the threads meet once per batch rather than once per block; the
-// batches are recycled with their blocks' storage, so a run allocates no more after the first few.
+// batches are recycled with their storage, so a run allocates no more after the first few.
 constexpr std::size_t kBatchBlocks = 256;
 constexpr std::size_t kBatchesInFlight = 4;
 
@@ -123,20 +134,27 @@ public:
 private:
   // Reads blocks into the batch; false when the input ended or a block failed its checks.
   bool fill(Batch& b) {
-    b.size = 0;
-    b.endOfInput = false;
-    b.tail.clear();
-    while (b.size < b.items.size()) {
-      Item& it = b.items[b.size];
-      if (!s_.source.next(it.block)) {
+    b.clear();
+    while (b.entries.size() < kBatchBlocks) {
+      if (!s_.source.next(block_)) {
         b.endOfInput = true;
-        takeNew(b.tail);
+        takeNew(b.diags);
         return false;
       }
-      it.failedCheck = !passesChecks(s_, it.block, it.sorted);
-      takeNew(it.diags);
-      ++b.size;
-      if (it.failedCheck) return false;
+      const bool failed = !passesChecks(s_, block_);
+      Batch::Entry& e = b.entries.emplace_back();
+      e.failedCheck = failed;
+      e.packed = b.packed.pack(block_);
+      if (e.packed) {
+        e.index = static_cast<std::uint32_t>(b.packed.size() - 1);
+      } else {
+        if (b.wholeUsed == b.whole.size()) b.whole.emplace_back();
+        e.index = static_cast<std::uint32_t>(b.wholeUsed);
+        std::swap(b.whole[b.wholeUsed++], block_);
+      }
+      takeNew(b.diags);
+      e.diagEnd = static_cast<std::uint32_t>(b.diags.size());
+      if (failed) return false;
     }
     return true;
   }
@@ -144,71 +162,99 @@ private:
   // The diagnostics reported since the last call. The private engine keeps them too, so its
   // error count (the static checks' signal) and error limit behave as the session's would.
   void takeNew(std::vector<diag::Diagnostic>& out) {
-    out.clear();
     const std::vector<diag::Diagnostic>& all = diags_.all();
     for (; shipped_ < all.size(); ++shipped_)
       if (all[shipped_].code != diag::code::TooManyErrors) out.push_back(all[shipped_]);
   }
 
-  const StreamStages& s_;
+  const StreamStages s_; // a copy: the caller's lies in the executing thread's stack
   Channel<std::unique_ptr<Batch>>& full_;
   Channel<std::unique_ptr<Batch>>& empty_;
   diag::Engine diags_;
   std::size_t shipped_ = 0;
+  ir::Block block_; // read into here, on this thread
 };
 
-void replay(diag::Engine& to, std::vector<diag::Diagnostic>& list) {
-  for (diag::Diagnostic& d : list)
-    to.report(std::move(d));
-  list.clear();
+void replay(diag::Engine& to, std::vector<diag::Diagnostic>& list, std::size_t begin,
+            std::size_t end) {
+  for (std::size_t i = begin; i < end; ++i)
+    to.report(std::move(list[i]));
 }
 
-void runThreaded(const StreamStages& s) {
+bool passes(const std::function<bool()>& part) {
+  return !part || part();
+}
+
+bool runThreaded(const StreamStages& s, const StreamGate& gate) {
   Channel<std::unique_ptr<Batch>> full(kBatchesInFlight), empty(kBatchesInFlight + 2);
-  for (std::size_t i = 0; i < kBatchesInFlight + 2; ++i) {
-    auto b = std::make_unique<Batch>();
-    b->items.resize(kBatchBlocks);
-    empty.push(std::move(b));
-  }
-  ReaderStage stage(s, full, empty);
+  for (std::size_t i = 0; i < kBatchesInFlight + 2; ++i)
+    empty.push(std::make_unique<Batch>());
   std::exception_ptr failure;
+  // The stage lives in the reading thread's own stack: what it writes for every block must not
+  // share a cache line with what this thread writes for every block.
+  std::atomic<bool> refused = false; // by the gate's second part
   std::thread reader([&] {
     try {
-      stage.run();
+      if (!passes(gate.second)) {
+        refused = true;
+        full.close();
+        return;
+      }
+      ReaderStage(s, full, empty).run();
     } catch (...) {
       failure = std::current_exception();
       full.close();
     }
   });
+  auto drop = [&] {
+    empty.close();
+    full.close();
+    reader.join();
+    return false;
+  };
+  if (!passes(gate.first)) return drop();
 
   // This thread executes. Each block's reader diagnostics are reported just before it runs, so
   // the session sees the sequential order; what the reader read beyond a stop is dropped.
   bool running = true;
+  ir::Block unpacked; // each packed block, rebuilt on this thread
   while (running) {
     std::optional<std::unique_ptr<Batch>> got = full.pop();
+    if (!got && refused) return drop(); // before any block ran: refusing closed the queue
     if (!got) break;
     Batch& b = **got;
-    for (std::size_t i = 0; i < b.size && running; ++i) {
-      Item& it = b.items[i];
-      replay(s.diags, it.diags);
-      running = !it.failedCheck && execute(s, it.block, it.sorted);
+    b.packed.prefetch();
+    std::size_t shown = 0;
+    for (std::size_t i = 0; i < b.entries.size() && running; ++i) {
+      const Batch::Entry& e = b.entries[i];
+      replay(s.diags, b.diags, shown, e.diagEnd);
+      shown = e.diagEnd;
+      if (e.failedCheck) {
+        running = false;
+      } else if (e.packed) {
+        b.packed.unpack(e.index, unpacked);
+        running = execute(s, unpacked);
+      } else {
+        running = execute(s, b.whole[e.index]);
+      }
     }
-    if (running && b.endOfInput) replay(s.diags, b.tail);
+    if (running && b.endOfInput) replay(s.diags, b.diags, shown, b.diags.size());
     empty.push(std::move(*got));
   }
   empty.close();
   full.close();
   reader.join();
   if (failure) std::rethrow_exception(failure);
+  return true;
 }
 
 } // namespace
 
-void runBlocks(const StreamStages& s, unsigned jobs) {
-  if (jobs > 1)
-    runThreaded(s);
-  else
-    runSequential(s);
+bool runBlocks(const StreamStages& s, unsigned jobs, const StreamGate& gate) {
+  if (jobs > 1) return runThreaded(s, gate);
+  if (!passes(gate.first) || !passes(gate.second)) return false;
+  runSequential(s);
+  return true;
 }
 
 unsigned defaultJobs() {

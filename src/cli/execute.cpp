@@ -190,8 +190,15 @@ bool executeProgram(Session& s, const CommonOptions& opt, const machine::Setup& 
                     motion::Sink& out, std::ostream& printOut, Frame frame,
                     motion::Sink* machineOut,
                     std::function<void(const motion::Provenance&)> onBlock) {
-  if (macro::mayNeedExpansion(s.path(), s.dialect().profile()))
-    return expandProgram(s, opt, setup, out, printOut, frame, machineOut, std::move(onBlock));
+  // The scan for what needs the expansion pass reads the whole file before any block runs. With
+  // two jobs each thread scans half of it; the streaming stages are built first, as they report
+  // and write nothing, and dropped if the scan finds something.
+  std::error_code noSize;
+  const std::uint64_t size = std::filesystem::file_size(s.path(), noSize);
+  const std::uint64_t half = noSize ? UINT64_MAX : size / 2;
+  const StreamGate noExpansion{
+      [&] { return !macro::mayNeedExpansion(s.path(), s.dialect().profile(), 0, half); },
+      [&] { return !macro::mayNeedExpansion(s.path(), s.dialect().profile(), half); }};
   check::StaticChecker checker(s.dialect().profile(), s.diags());
   FramedSink framed(out, frame, machineOut);
   motion::Sink& sink = framed.sink();
@@ -199,8 +206,10 @@ bool executeProgram(Session& s, const CommonOptions& opt, const machine::Setup& 
   framed.bind(interp);
   limitMachine(interp, opt, programSize(s));
   interp.setKeepCompensation(opt.keepCompensation);
-  interp.setBlockObserver(std::move(onBlock));
-  runBlocks(StreamStages{s.source(), checker, interp, s.diags(), s.dialect().profile()}, opt.jobs);
+  interp.setBlockObserver(onBlock);
+  const StreamStages stages{s.source(), checker, interp, s.diags()};
+  if (!runBlocks(stages, opt.jobs, noExpansion))
+    return expandProgram(s, opt, setup, out, printOut, frame, machineOut, std::move(onBlock));
   if (s.diags().hasErrors()) return false;
   if (!interp.ended()) {
     // drain the rest for static errors (GOTO targets, loops) only when the program ran out

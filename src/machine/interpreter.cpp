@@ -264,11 +264,9 @@ void Interpreter::emitLine(Kind kind, const Vec3& to, const motion::Extra& extra
   emit(std::move(e));
 }
 
-bool Interpreter::execute(const ir::Block& block, const motion::Provenance& from,
-                          SortedWords* sorted) {
+bool Interpreter::execute(const ir::Block& block, const motion::Provenance& from) {
   if (ended_ || stopped_) return false;
   if (blockObserver_) blockObserver_(from);
-  presorted_ = sorted;
   setProvenance(from_, from);
   blockRange_ = block.range;
   blockMoves_ = 0;
@@ -278,8 +276,6 @@ bool Interpreter::execute(const ir::Block& block, const motion::Provenance& from
 }
 
 bool Interpreter::executeBlock(const ir::Block& block) {
-  // the words sorted beforehand belong to execute()'s block, not to one run inside this one
-  SortedWords* const sorted = std::exchange(presorted_, nullptr);
   if (block.kind == ir::BlockKind::ProgramStart) return true;
   if (skips(block.skipLevel)) return true;
   if (block.kind == ir::BlockKind::Data) return dataInput(BlockWords{}, block);
@@ -294,10 +290,9 @@ bool Interpreter::executeBlock(const ir::Block& block) {
           return levelCycleBlock(block, g, *spec);
   if (const auto repeated = levelCycleRepeat(block)) return *repeated;
   if (const auto polar = polePolarBlock(block)) return *polar;
-  std::optional<ReusedBlockWords> reused;
-  if (!sorted) reused.emplace();
-  BlockWords& w = sorted ? sorted->words : reused->words();
-  if (const ir::Word* bad = sorted ? sorted->notLiteral : sortWords(block, profile_, w))
+  ReusedBlockWords reused;
+  BlockWords& w = reused.words();
+  if (const ir::Word* bad = sortWords(block, profile_, w))
     return fail(diag::code::ExpressionNotExpanded, bad->range,
                 fmt::format("the value of {} is an expression; expressions are evaluated by the "
                             "macro pass, which is not implemented yet",

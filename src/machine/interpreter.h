@@ -107,10 +107,7 @@ public:
   Interpreter(const Profile& profile, const Setup& setup, motion::Sink& sink, diag::Engine& diags);
 
   /// Executes one block. False when execution must stop: an alarm (reported) or program end.
-  /// `sorted`: the block's words as sortWords sorts them, done beforehand; the interpreter may
-  /// change them.
-  bool execute(const ir::Block& block, const motion::Provenance& from,
-               SortedWords* sorted = nullptr);
+  bool execute(const ir::Block& block, const motion::Provenance& from);
   /// The input ended; a program may end without M2/M30 (nct.md Q31).
   void finish();
   /// The main program's file ran out: finish(), or the dialect's error when a program must end
@@ -212,7 +209,6 @@ private:
 
   bool fail(const char* code, const SourceRange& where, std::string message);
   bool executeBlock(const ir::Block& block);
-  SortedWords* presorted_ = nullptr; // execute()'s, for its block alone
   /// A motion event's numbers are finite and writable, and the move limit holds; else the run
   /// stops with a located error.
   bool admitMotion(const motion::Event& e);

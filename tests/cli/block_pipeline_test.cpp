@@ -138,5 +138,34 @@ TEST_F(BlockPipeline, ErrorAtTheLastReadReportsAfterEveryBlock) {
   EXPECT_EQ(r.diagnostics.back(), "1000:7 2 GCX006");
 }
 
+TEST_F(BlockPipeline, PackedAndWholeBlocksInterleaved) {
+  // numbered blocks travel packed, those with a comment whole (cli/packed_blocks.h); the
+  // interpreter's error is located inside a packed block, at its X word (NCT's G4 takes P)
+  const RunResult r = runBoth(program(2000, [](int k) {
+    return k == 1700    ? std::string("N1700 G4 X-1")
+           : k % 7 == 0 ? fmt::format("N{} G1 X{} (seven)", k, k % 40)
+                        : fmt::format("N{} G1 X{} Y{} F900", k, k % 50, k % 3);
+  }));
+  EXPECT_FALSE(r.ok);
+  ASSERT_EQ(r.diagnostics.size(), 1u);
+  EXPECT_EQ(r.diagnostics.back(), "1700:10 2 GCX035");
+}
+
+TEST_F(BlockPipeline, AVariableInEitherHalfSendsTheProgramToTheExpansionPass) {
+  // each thread scans half of the file for what needs the expansion pass while the reader
+  // starts; a find in either half drops what was read and expands the whole program
+  for (const int at : {2, 2990}) {
+    const RunResult r = runBoth(program(3000, [&](int k) {
+      return k == at       ? std::string("#1=7")
+             : k == at + 1 ? std::string("G1 X#1 Y0")
+             : k == 3000   ? std::string("M30")
+                           : "";
+    }));
+    EXPECT_TRUE(r.ok) << "variable at line " << at;
+    EXPECT_TRUE(r.diagnostics.empty()) << "variable at line " << at;
+    EXPECT_NE(r.output.find("G1 X7 Y0"), std::string::npos) << "variable at line " << at;
+  }
+}
+
 } // namespace
 } // namespace gcx::test

@@ -59,5 +59,24 @@ TEST_F(ExpansionNeed, MarkerAcrossTheChunkBoundary) {
   }
 }
 
+TEST_F(ExpansionNeed, TwoHalvesSeeEachMarkerOnce) {
+  // a marker counts in the part where it begins, read past the part's end if it must; so the
+  // two halves a two-thread run scans at once agree with one scan wherever the cut falls
+  for (std::size_t marker : {10u, 65533u, 65536u, 70000u}) {
+    std::string text(marker, ' ');
+    for (std::size_t i = 99; i < marker; i += 100)
+      text[i] = '\n';
+    text += "GOTO 5\n";
+    text += std::string(200000 - text.size(), ' ');
+    std::ofstream(path_, std::ios::binary) << text;
+    for (std::size_t cut : {marker - 1, marker, marker + 1, marker + 3, marker + 4}) {
+      const bool first = macro::mayNeedExpansion(path_.string(), nct::profile(), 0, cut);
+      const bool second = macro::mayNeedExpansion(path_.string(), nct::profile(), cut);
+      EXPECT_EQ(first, cut > marker) << "marker at " << marker << ", cut at " << cut;
+      EXPECT_EQ(second, cut <= marker) << "marker at " << marker << ", cut at " << cut;
+    }
+  }
+}
+
 } // namespace
 } // namespace gcx::test

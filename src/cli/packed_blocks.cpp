@@ -1,0 +1,162 @@
+#include "cli/packed_blocks.h"
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+
+#include "ir/new_expr.h"
+
+namespace gcx::cli {
+
+namespace {
+
+inline bool sameLine(const SourceLoc& a, const SourceLoc& line) {
+  return a.file == line.file && a.line == line.line && a.col >= 1 && line.col >= 1 &&
+         a.offset - a.col == line.offset - line.col;
+}
+
+// Whether e is a new ir::Expr: what a literal word holds (the fast parse resets it so).
+inline bool isNewExpr(const ir::Expr& e) {
+  return e.kind == ir::kNewExpr.kind && e.number == ir::kNewExpr.number && e.name.empty() &&
+         e.args.empty() && e.op == ir::kNewExpr.op && e.func == ir::kNewExpr.func &&
+         e.prmHasBit == ir::kNewExpr.prmHasBit && e.prmHasIndex == ir::kNewExpr.prmHasIndex &&
+         e.range.begin.file == ir::kNewExpr.range.begin.file && e.range.begin.line == 0 &&
+         e.range.begin.col == 0 && e.range.begin.offset == 0 && e.range.length == 0;
+}
+
+inline bool packableWord(const ir::Word& w, const SourceLoc& line) {
+  return w.address.size() == 1 && w.kind == ir::ValueKind::Number && w.axisIndex.empty() &&
+         w.text.size() <= PackedBlocks::kMaxText && sameLine(w.range.begin, line) &&
+         isNewExpr(w.expr);
+}
+
+// to = the range on the line of `line` that starts at col, stored field by field (a temporary
+// copied whole would make the copy wait for its narrow stores).
+inline void writeOnLine(SourceRange& to, const SourceLoc& line, std::uint32_t col,
+                        std::uint32_t length) {
+  to.begin.file = line.file;
+  to.begin.line = line.line;
+  to.begin.col = col;
+  to.begin.offset = line.offset - line.col + col;
+  to.length = length;
+}
+
+inline void assignText(std::string& to, const char* from, std::size_t n) {
+  if (to.size() == n) // as long as the block before's (CAM output): in place
+    std::copy(from, from + n, to.begin());
+  else
+    to.assign(from, n);
+}
+
+} // namespace
+
+namespace {
+// The conditions on the block itself; its words are checked one by one as they are packed.
+bool packableBlock(const ir::Block& b) {
+  const SourceLoc& line = b.range.begin;
+  if (!b.programName.empty() || !b.stmts.empty() || !b.comments.empty() ||
+      b.words.size() > std::numeric_limits<std::uint8_t>::max() || b.skipLevel < 0 ||
+      b.skipLevel > std::numeric_limits<std::int8_t>::max())
+    return false;
+  if (b.sequence)
+    return b.sequenceText.size() <= PackedBlocks::kMaxText && sameLine(b.sequenceRange.begin, line);
+  return b.sequenceText.empty() && !b.sequenceRange.begin.valid();
+}
+} // namespace
+
+namespace {
+// Room for n more after the first `used` of v, grown by doubling: the first batches set the size
+// for the run.
+template <class T> T* room(std::vector<T>& v, std::size_t used, std::size_t n) {
+  if (used + n > v.size()) v.resize(std::max(v.size() * 2, used + n));
+  return v.data() + used;
+}
+} // namespace
+
+bool PackedBlocks::pack(const ir::Block& b) {
+  if (!packableBlock(b)) return false;
+  // the words first: one that has no packed form leaves nothing behind (wordsUsed_ is kept)
+  const std::size_t n = b.words.size();
+  Word* q = room(words_, wordsUsed_, n);
+  for (const ir::Word& w : b.words) {
+    if (!packableWord(w, b.range.begin)) return false;
+    q->number = w.number;
+    q->col = w.range.begin.col;
+    q->length = w.range.length;
+    q->order = w.order;
+    q->letter = w.address[0];
+    q->incremental = w.incremental;
+    q->textLength = static_cast<std::uint8_t>(w.text.size());
+    std::memcpy(q->text, w.text.data(), w.text.size());
+    ++q;
+  }
+  Block& p = *room(blocks_, blocksUsed_, 1);
+  p.range = b.range;
+  p.lastLine = b.lastLine;
+  p.kind = b.kind;
+  p.skipLevel = static_cast<std::int8_t>(b.skipLevel);
+  p.hasSequence = b.sequence.has_value();
+  p.sequence = b.sequence.value_or(0);
+  p.sequenceTextLength = static_cast<std::uint8_t>(b.sequenceText.size());
+  std::memcpy(p.sequenceText, b.sequenceText.data(), b.sequenceText.size());
+  p.sequenceCol = b.sequenceRange.begin.col;
+  p.sequenceLength = b.sequenceRange.length;
+  p.firstWord = static_cast<std::uint32_t>(wordsUsed_);
+  p.wordCount = static_cast<std::uint8_t>(n);
+  wordsUsed_ += n;
+  ++blocksUsed_;
+  return true;
+}
+
+void PackedBlocks::unpack(std::size_t i, ir::Block& out) const {
+  const Block& p = blocks_[i];
+  out.kind = p.kind;
+  out.skipLevel = p.skipLevel;
+  if (p.hasSequence) {
+    out.sequence = p.sequence;
+    assignText(out.sequenceText, p.sequenceText, p.sequenceTextLength);
+    writeOnLine(out.sequenceRange, p.range.begin, p.sequenceCol, p.sequenceLength);
+  } else {
+    out.sequence.reset();
+    out.sequenceText.clear();
+    out.sequenceRange = {};
+  }
+  out.programName.clear();
+  out.stmts.clear();
+  out.comments.clear();
+  out.range = p.range;
+  out.lastLine = p.lastLine;
+  out.words.resize(p.wordCount);
+  const Word* q = words_.data() + p.firstWord;
+  for (ir::Word& w : out.words) {
+    if (w.address.size() == 1)
+      w.address[0] = q->letter;
+    else
+      w.address.assign(1, q->letter);
+    w.incremental = q->incremental;
+    w.kind = ir::ValueKind::Number;
+    w.order = q->order;
+    w.number = q->number;
+    assignText(w.text, q->text, q->textLength);
+    ir::resetExpr(w.expr);
+    if (!w.axisIndex.empty()) w.axisIndex.clear();
+    writeOnLine(w.range, p.range.begin, q->col, q->length);
+    ++q;
+  }
+}
+
+namespace {
+void prefetchBytes(const void* data, std::size_t bytes) {
+  constexpr std::size_t kLine = 64;
+  const auto* p = static_cast<const char*>(data);
+  for (std::size_t at = 0; at < bytes; at += kLine)
+    __builtin_prefetch(p + at, 0, 2);
+}
+} // namespace
+
+void PackedBlocks::prefetch() const {
+  prefetchBytes(blocks_.data(), blocksUsed_ * sizeof(Block));
+  prefetchBytes(words_.data(), wordsUsed_ * sizeof(Word));
+}
+
+} // namespace gcx::cli
