@@ -38,7 +38,7 @@ Setting nth(Setting first, int i) {
 Interpreter::Interpreter(const Profile& profile, const Setup& setup, motion::Sink& sink,
                          diag::Engine& diags)
     : profile_(profile), setup_(setup), sink_(&sink), diags_(diags) {
-  radiusTolerance_ = setting(profile_, setup_, Setting::ArcRadiusTolerance, 0.01);
+  cacheSettings();
   const auto& p = setup_.initialPosition;
   machine_ = Vec3(p[0], p[1], p[2]);
   const auto c = setup_.workOffset("common");
@@ -52,6 +52,11 @@ Interpreter::Interpreter(const Profile& profile, const Setup& setup, motion::Sin
   resetModal();
   reexpress();
   comp_ = CompensationStage(compensationOptions());
+}
+
+void Interpreter::cacheSettings() {
+  radiusTolerance_ = setting(profile_, setup_, Setting::ArcRadiusTolerance, 0.01);
+  arcCentreMode_ = setting(profile_, setup_, Setting::ArcCentreAbsolute);
 }
 
 bool Interpreter::fail(const char* code, const SourceRange& where, std::string message) {
@@ -855,8 +860,7 @@ bool Interpreter::dataInput(const BlockWords& w, const ir::Block& dataBlock) {
       key += fmt::format(".{}", q->number);
     const double old = setup_.parameter(key, 0);
     setup_.parameters[key] = r->incremental ? old + r->number : r->number;
-    if (const char* tolerance = settingKey(profile_, Setting::ArcRadiusTolerance))
-      if (key == tolerance) radiusTolerance_ = setup_.parameters[key];
+    cacheSettings(); // the record may have set one of them
     return true;
   }
   const ir::Word* g = w.findAction(GAction::DataInput);
@@ -1224,8 +1228,7 @@ bool Interpreter::arc(const BlockWords& w, const Vec3& end, const motion::Extra&
     }
   } else {
     // from the start point, unless the dialect's setting makes the centre absolute
-    const double centreMode = setting(profile_, setup_, Setting::ArcCentreAbsolute);
-    if (centreMode == 1 || (centreMode == 2 && !state_.incremental)) {
+    if (arcCentreMode_ == 1 || (arcCentreMode_ == 2 && !state_.incremental)) {
       c1 = w.ijk[ax.first] ? mm(w.ijk[ax.first]->number) : s1;
       c2 = w.ijk[ax.second] ? mm(w.ijk[ax.second]->number) : s2;
     } else {

@@ -391,7 +391,10 @@ private:
   unsigned parallelAxes_ = 0; // bit i: U/V/W is an axis parallel to X/Y/Z (a setting)
   Rollover rollover_;
   std::array<int, 64> modalCodes_{}; // per modal group: the G code (x10) last in force
+  // settings read for every arc, read again when a data record (G10 L52) sets a parameter
   double radiusTolerance_;
+  double arcCentreMode_; // Setting::ArcCentreAbsolute
+  void cacheSettings();
   motion::Provenance from_;
   SourceRange blockRange_;
   std::map<std::string, std::array<double, 3>> rotations_; // basic rotations per work system
