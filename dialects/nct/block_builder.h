@@ -9,6 +9,7 @@
 #include "front/raw_block.h"
 #include "ir/block.h"
 #include "ir/new_expr.h"
+#include "ir/short_text.h"
 
 namespace gcx::nct {
 
@@ -89,8 +90,8 @@ inline void BlockBuilder::literalWord(char letter, std::size_t pos, std::size_t 
   w.incremental = incremental;
   w.kind = ir::ValueKind::Number;
   w.number = negative ? -value : value;
-  if (w.text.size() == text.size()) // as long as the word's before (CAM output): in place
-    std::copy(text.begin(), text.end(), w.text.begin());
+  if (text.size() <= 16)
+    ir::assignShort(w.text, text.data(), text.size());
   else
     w.text.assign(text);
 }

@@ -1,10 +1,10 @@
 #include "cli/packed_blocks.h"
 
 #include <algorithm>
-#include <cstring>
 #include <limits>
 
 #include "ir/new_expr.h"
+#include "ir/short_text.h"
 
 namespace gcx::cli {
 
@@ -39,13 +39,6 @@ inline void writeOnLine(SourceRange& to, const SourceLoc& line, std::uint32_t co
   to.begin.col = col;
   to.begin.offset = line.offset - line.col + col;
   to.length = length;
-}
-
-inline void assignText(std::string& to, const char* from, std::size_t n) {
-  if (to.size() == n) // as long as the block before's (CAM output): in place
-    std::copy(from, from + n, to.begin());
-  else
-    to.assign(from, n);
 }
 
 } // namespace
@@ -87,7 +80,7 @@ bool PackedBlocks::pack(const ir::Block& b) {
     q->letter = w.address[0];
     q->incremental = w.incremental;
     q->textLength = static_cast<std::uint8_t>(w.text.size());
-    std::memcpy(q->text, w.text.data(), w.text.size());
+    ir::copyShort(q->text, w.text.data(), w.text.size());
     ++q;
   }
   Block& p = *room(blocks_, blocksUsed_, 1);
@@ -98,7 +91,7 @@ bool PackedBlocks::pack(const ir::Block& b) {
   p.hasSequence = b.sequence.has_value();
   p.sequence = b.sequence.value_or(0);
   p.sequenceTextLength = static_cast<std::uint8_t>(b.sequenceText.size());
-  std::memcpy(p.sequenceText, b.sequenceText.data(), b.sequenceText.size());
+  ir::copyShort(p.sequenceText, b.sequenceText.data(), b.sequenceText.size());
   p.sequenceCol = b.sequenceRange.begin.col;
   p.sequenceLength = b.sequenceRange.length;
   p.firstWord = static_cast<std::uint32_t>(wordsUsed_);
@@ -114,7 +107,7 @@ void PackedBlocks::unpack(std::size_t i, ir::Block& out) const {
   out.skipLevel = p.skipLevel;
   if (p.hasSequence) {
     out.sequence = p.sequence;
-    assignText(out.sequenceText, p.sequenceText, p.sequenceTextLength);
+    ir::assignShort(out.sequenceText, p.sequenceText, p.sequenceTextLength);
     writeOnLine(out.sequenceRange, p.range.begin, p.sequenceCol, p.sequenceLength);
   } else {
     out.sequence.reset();
@@ -137,7 +130,7 @@ void PackedBlocks::unpack(std::size_t i, ir::Block& out) const {
     w.kind = ir::ValueKind::Number;
     w.order = q->order;
     w.number = q->number;
-    assignText(w.text, q->text, q->textLength);
+    ir::assignShort(w.text, q->text, q->textLength);
     ir::resetExpr(w.expr);
     if (!w.axisIndex.empty()) w.axisIndex.clear();
     writeOnLine(w.range, p.range.begin, q->col, q->length);
