@@ -212,34 +212,40 @@ bool runThreaded(const StreamStages& s, const StreamGate& gate) {
     reader.join();
     return false;
   };
-  if (!passes(gate.first)) return drop();
 
   // This thread executes. Each block's reader diagnostics are reported just before it runs, so
-  // the session sees the sequential order; what the reader read beyond a stop is dropped.
-  bool running = true;
-  ir::Block unpacked; // each packed block, rebuilt on this thread
-  while (running) {
-    std::optional<std::unique_ptr<Batch>> got = full.pop();
-    if (!got && refused) return drop(); // before any block ran: refusing closed the queue
-    if (!got) break;
-    Batch& b = **got;
-    b.packed.prefetch();
-    std::size_t shown = 0;
-    for (std::size_t i = 0; i < b.entries.size() && running; ++i) {
-      const Batch::Entry& e = b.entries[i];
-      replay(s.diags, b.diags, shown, e.diagEnd);
-      shown = e.diagEnd;
-      if (e.failedCheck) {
-        running = false;
-      } else if (e.packed) {
-        b.packed.unpack(e.index, unpacked);
-        running = execute(s, unpacked);
-      } else {
-        running = execute(s, b.whole[e.index]);
+  // the session sees the sequential order; what the reader read beyond a stop is dropped. What
+  // a sink throws (out of memory, a harness's cap) stops the reader before it goes on.
+  try {
+    if (!passes(gate.first)) return drop();
+    bool running = true;
+    ir::Block unpacked; // each packed block, rebuilt on this thread
+    while (running) {
+      std::optional<std::unique_ptr<Batch>> got = full.pop();
+      if (!got && refused) return drop(); // before any block ran: refusing closed the queue
+      if (!got) break;
+      Batch& b = **got;
+      b.packed.prefetch();
+      std::size_t shown = 0;
+      for (std::size_t i = 0; i < b.entries.size() && running; ++i) {
+        const Batch::Entry& e = b.entries[i];
+        replay(s.diags, b.diags, shown, e.diagEnd);
+        shown = e.diagEnd;
+        if (e.failedCheck) {
+          running = false;
+        } else if (e.packed) {
+          b.packed.unpack(e.index, unpacked);
+          running = execute(s, unpacked);
+        } else {
+          running = execute(s, b.whole[e.index]);
+        }
       }
+      if (running && b.endOfInput) replay(s.diags, b.diags, shown, b.diags.size());
+      empty.push(std::move(*got));
     }
-    if (running && b.endOfInput) replay(s.diags, b.diags, shown, b.diags.size());
-    empty.push(std::move(*got));
+  } catch (...) {
+    drop();
+    throw;
   }
   empty.close();
   full.close();

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <unistd.h>
 
 #include "cli/execute.h"
@@ -164,6 +165,33 @@ TEST_F(BlockPipeline, AVariableInEitherHalfSendsTheProgramToTheExpansionPass) {
     EXPECT_TRUE(r.ok) << "variable at line " << at;
     EXPECT_TRUE(r.diagnostics.empty()) << "variable at line " << at;
     EXPECT_NE(r.output.find("G1 X7 Y0"), std::string::npos) << "variable at line " << at;
+  }
+}
+
+TEST_F(BlockPipeline, WhatASinkThrowsReachesTheCallerWithTheReaderStopped) {
+  // an output that gives up (a cap, no memory) throws from the executing thread while the reader
+  // thread is still reading: it must be stopped and joined, not left to end the process
+  struct Full : std::runtime_error {
+    Full() : std::runtime_error("output full") {}
+  };
+  struct ThrowingSink : motion::Sink {
+    int events = 0;
+    void event(const motion::Event&) override {
+      if (++events == 1000) throw Full();
+    }
+  };
+  const fs::path path = dir_ / "O0002.nct";
+  std::ofstream(path, std::ios::binary) << program(5000, [](int) { return std::string(); });
+  for (const unsigned jobs : {1u, 2u}) {
+    cli::CommonOptions opt;
+    opt.jobs = jobs;
+    cli::Session s(opt);
+    ASSERT_TRUE(s.open(path.string()));
+    ThrowingSink sink;
+    std::ostringstream print;
+    EXPECT_THROW(cli::executeProgram(s, opt, machine::Setup{}, sink, print), Full)
+        << "jobs " << jobs;
+    EXPECT_EQ(sink.events, 1000) << "jobs " << jobs;
   }
 }
 
