@@ -8,7 +8,7 @@
 # G0/G1 (lines/s counts source blocks, and separately canonical lines emitted), and runs the
 # equivalent RS274 program (without NCT's E word) through rs274.
 #   usage: bench/run.sh BUILD_DIR [LINES]
-#   (environment: HOLES=100000, RSS_LINES=10000000, EXPR_LINES=LINES/10, REPEAT=3)
+#   (environment: HOLES=100000, RSS_LINES=10000000, EXPR_LINES=LINES/10, REPEAT=3, STARTS=100)
 set -euo pipefail
 export LC_ALL=C # a decimal point in EPOCHREALTIME and awk
 build=${1:-build}
@@ -170,6 +170,14 @@ if $have_rs274; then
     echo "rs274 wrote $rfeeds feed moves, gcx $gfeeds"; exit 1
   fi
 fi
+
+echo "== start-up: gcx check of a one-block program, mean of ${STARTS:=100} runs"
+# what a run over an archive of small files pays per file, before reading any of it
+printf 'G0 X0\n' > "$work/one.nct"
+t0=$EPOCHREALTIME
+for ((run = 0; run < STARTS; ++run)); do "$gcx" check "$work/one.nct" > /dev/null; done
+awk -v a="$t0" -v b="$EPOCHREALTIME" -v n="$STARTS" \
+  'BEGIN { printf "%-56s %7.2f ms\n", "gcx check (1 line)", (b - a) * 1000 / n }'
 
 echo "== the targets of issue 15 (ratios need rs274)"
 speedup() {  # speedup RS_RATE N SECS: gcx's lines/s over rs274's

@@ -566,7 +566,7 @@ struct GrammarParser::Impl : front::AntlrBlockParser<nctgen::NCTLexer, nctgen::N
   void report(const front::RawBlock& raw, diag::Engine& diags);
 };
 
-GrammarParser::GrammarParser() : impl_(std::make_unique<Impl>()) {}
+GrammarParser::GrammarParser() = default;
 GrammarParser::~GrammarParser() = default;
 
 void GrammarParser::Impl::report(const front::RawBlock& raw, diag::Engine& diags) {
@@ -652,6 +652,8 @@ void GrammarParser::Impl::report(const front::RawBlock& raw, diag::Engine& diags
 
 bool GrammarParser::parse(const front::RawBlock& raw, ir::Block& out, diag::Engine& diags) {
   if (!checkBrackets(raw, diags)) return false;
+  // Made on the first block that needs the grammar: plain CAM output never pays for the ATNs.
+  if (!impl_) impl_ = std::make_unique<Impl>();
   Impl& m = *impl_;
   m.reset(raw.lexText);
 
