@@ -219,7 +219,7 @@ bool runThreaded(const StreamStages& s, const StreamGate& gate) {
   try {
     if (!passes(gate.first)) return drop();
     bool running = true;
-    ir::Block unpacked; // each packed block, rebuilt on this thread
+    UnpackedBlock unpacked; // each packed block, rebuilt on this thread
     while (running) {
       std::optional<std::unique_ptr<Batch>> got = full.pop();
       if (!got && refused) return drop(); // before any block ran: refusing closed the queue
@@ -235,7 +235,7 @@ bool runThreaded(const StreamStages& s, const StreamGate& gate) {
           running = false;
         } else if (e.packed) {
           b.packed.unpack(e.index, unpacked);
-          running = execute(s, unpacked);
+          running = execute(s, unpacked.block());
         } else {
           running = execute(s, b.whole[e.index]);
         }

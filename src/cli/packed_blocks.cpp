@@ -101,7 +101,8 @@ bool PackedBlocks::pack(const ir::Block& b) {
   return true;
 }
 
-void PackedBlocks::unpack(std::size_t i, ir::Block& out) const {
+void PackedBlocks::unpack(std::size_t i, UnpackedBlock& to) const {
+  ir::Block& out = to.block_;
   const Block& p = blocks_[i];
   out.kind = p.kind;
   out.skipLevel = p.skipLevel;
@@ -114,12 +115,9 @@ void PackedBlocks::unpack(std::size_t i, ir::Block& out) const {
     out.sequenceText.clear();
     out.sequenceRange = {};
   }
-  out.programName.clear();
-  out.stmts.clear();
-  out.comments.clear();
   out.range = p.range;
   out.lastLine = p.lastLine;
-  out.words.resize(p.wordCount);
+  out.words.resize(p.wordCount); // a new slot: a literal with a new expression, no address
   const Word* q = words_.data() + p.firstWord;
   for (ir::Word& w : out.words) {
     if (w.address.size() == 1)
@@ -127,12 +125,9 @@ void PackedBlocks::unpack(std::size_t i, ir::Block& out) const {
     else
       w.address.assign(1, q->letter);
     w.incremental = q->incremental;
-    w.kind = ir::ValueKind::Number;
     w.order = q->order;
     w.number = q->number;
     ir::assignShort(w.text, q->text, q->textLength);
-    ir::resetExpr(w.expr);
-    if (!w.axisIndex.empty()) w.axisIndex.clear();
     writeOnLine(w.range, p.range.begin, q->col, q->length);
     ++q;
   }

@@ -13,6 +13,8 @@
 
 namespace gcx::cli {
 
+class UnpackedBlock;
+
 class PackedBlocks {
 public:
   /// Appends b if it has the packed form: a block (of any kind) whose words are one-letter
@@ -21,7 +23,7 @@ public:
   /// nothing appended, if not.
   bool pack(const ir::Block& b);
   /// Block i as it was packed, written into out; out's words are reused in place.
-  void unpack(std::size_t i, ir::Block& out) const;
+  void unpack(std::size_t i, UnpackedBlock& out) const;
   std::size_t size() const { return blocksUsed_; }
   void clear() { blocksUsed_ = wordsUsed_ = 0; }
   /// Asks the processor to fetch the packed bytes into this core's cache, ahead of unpack: they
@@ -60,6 +62,19 @@ private:
   std::vector<Block> blocks_;
   std::vector<Word> words_;
   std::size_t blocksUsed_ = 0, wordsUsed_ = 0;
+};
+
+/// The block the executing thread rebuilds packed blocks in. Only PackedBlocks::unpack writes
+/// it, so what every packed block has in common (no statements, comments or program name; words
+/// with a new expression and no axis index, literal) is never undone and not written again: a
+/// new word slot has it from its constructor.
+class UnpackedBlock {
+public:
+  const ir::Block& block() const { return block_; }
+
+private:
+  friend class PackedBlocks;
+  ir::Block block_;
 };
 
 } // namespace gcx::cli
