@@ -24,6 +24,11 @@ inline constexpr const char* kPathAddress = "<>";
 /// One address word: `X-40`, `XI-40` (incremental operator), `Z#1`, `,C5`, `AX[2]=10`, `M98
 /// <a.nct>`, FMS `LIMS2000`, WL4 `L0703`.
 struct Word {
+  // User-provided, not defaulted: a defaulted one lets `Word()` (vector::resize, emplace_back)
+  // zero the whole ~250 bytes before the member initializers run, a microcoded `rep stos` that
+  // words reused block after block pay whenever a block has more words than the one before.
+  Word() {}
+
   std::string address;      // upper case: "X", "G", ",C", "AX", "LIMS", "GG"
   bool incremental = false; // NCT I operator (nct.md §1.2 rule 4)
   ValueKind kind = ValueKind::Number;
