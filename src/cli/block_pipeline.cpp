@@ -225,7 +225,6 @@ bool runThreaded(const StreamStages& s, const StreamGate& gate) {
       if (!got && refused) return drop(); // before any block ran: refusing closed the queue
       if (!got) break;
       Batch& b = **got;
-      b.packed.prefetch();
       std::size_t shown = 0;
       for (std::size_t i = 0; i < b.entries.size() && running; ++i) {
         const Batch::Entry& e = b.entries[i];

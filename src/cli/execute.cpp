@@ -199,7 +199,12 @@ bool executeProgram(Session& s, const CommonOptions& opt, const machine::Setup& 
   const StreamGate noExpansion{
       [&] { return !macro::mayNeedExpansion(s.path(), s.dialect().profile(), 0, half); },
       [&] { return !macro::mayNeedExpansion(s.path(), s.dialect().profile(), half); }};
-  check::StaticChecker checker(s.dialect().profile(), s.diags());
+  // With two jobs the reading thread checks every block: the checker, which it writes, must not
+  // share a cache line with the interpreter and sinks this thread writes beside it.
+  struct alignas(128) OwnLines {
+    check::StaticChecker checker;
+  } isolated{check::StaticChecker(s.dialect().profile(), s.diags())};
+  check::StaticChecker& checker = isolated.checker;
   FramedSink framed(out, frame, machineOut);
   motion::Sink& sink = framed.sink();
   machine::Interpreter interp(s.dialect().profile(), setup, sink, s.diags());

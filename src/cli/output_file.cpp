@@ -10,7 +10,10 @@
 namespace gcx::cli {
 
 namespace {
-struct Budget {
+// Written for every line written. Its own 128 bytes (a cache line and the neighbour the processor
+// fetches with it): a constant beside it that the reading thread reads for every word (an LTO
+// build put ir::kNewExpr there) made both threads wait on each other, 0.37 s -> 0.53 s.
+struct alignas(128) Budget {
   std::uint64_t limit = UINT64_MAX;
   std::uint64_t used = 0;
 } budget;

@@ -26,9 +26,6 @@ public:
   void unpack(std::size_t i, UnpackedBlock& out) const;
   std::size_t size() const { return blocksUsed_; }
   void clear() { blocksUsed_ = wordsUsed_ = 0; }
-  /// Asks the processor to fetch the packed bytes into this core's cache, ahead of unpack: they
-  /// were just written on another core, and without it each block waits for its lines in turn.
-  void prefetch() const;
 
   static constexpr std::size_t kMaxText = 15; // a word's or sequence number's text
 
