@@ -24,6 +24,7 @@ struct BlockWords {
   const ir::Word *chamfer = nullptr, *rounding = nullptr, *angle = nullptr;
   std::vector<const ir::Word*> other;        // multi-letter words (AX), <file>, O, N words
   std::array<const ir::Word*, 26> letters{}; // every single-letter word by its letter
+  std::uint32_t lettersSet = 0; // the entries of letters that sortWords set, by bit, for clear()
   /// The actions of gCodes as bits, so that asking for an action the block lacks (the usual
   /// answer, asked many times a block) does not walk the codes.
   std::array<std::uint64_t, 4> actionBits{};
