@@ -1,6 +1,6 @@
 // The two-thread streaming loop (--jobs 2) reports exactly what the one-thread loop reports:
 // the same canonical output, the same diagnostics in the same order, the same stop. Programs
-// span many batches of the reader thread, with warnings, errors and stops placed inside them.
+// span several batches of the reader thread, with warnings, errors and stops placed inside them.
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
