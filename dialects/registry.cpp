@@ -31,7 +31,8 @@ public:
   bool canReadInParts() const override { return reader_.canReadInParts(); }
   void startAt(std::uint64_t offset, std::uint32_t line) override { reader_.startAt(offset, line); }
   void stopAt(std::uint64_t offset) override { reader_.stopAt(offset); }
-  std::optional<std::uint64_t> stoppedAt() const override { return reader_.stoppedAt(); }
+  std::optional<SourceLoc> stoppedAt() const override { return reader_.stoppedAt(); }
+  void shiftLines(std::int64_t delta) override { reader_.shiftLines(delta); }
   bool stateless() const override { return reader_.stateless(); }
 
 private:

@@ -31,7 +31,8 @@ public:
   bool canReadInParts() const { return !bytes_.converts(); }
   void startAt(std::uint64_t offset, std::uint32_t line) { bytes_.startAt(offset, line); }
   void stopAt(std::uint64_t offset) { bytes_.stopAt(offset); }
-  std::optional<std::uint64_t> stoppedAt() const { return bytes_.stoppedAt(); }
+  std::optional<SourceLoc> stoppedAt() const { return bytes_.stoppedAt(); }
+  void shiftLines(std::int64_t delta) { bytes_.shiftLines(delta); }
   /// No G10 data records open: reading on is reading a new source from here.
   bool stateless() const { return !dataMode_; }
   /// Disable the fast path (tests compare both paths).

@@ -259,11 +259,19 @@ void StaticChecker::statement(const ir::Stmt& s) {
   }
 }
 
-bool StaticChecker::join(StaticChecker&& next) {
+bool StaticChecker::join(StaticChecker&& next, std::int64_t lineShift) {
   // what a block's checks read of the blocks before: the open loops, a '%' waiting for the next
   // block, and whether any block came before (a '%' after blocks is suspect)
   if (!loops_.empty() || percentAfterStart_ || (blocks_ > 0 && next.startBeforeBlocks_))
     return false;
+  auto shift = [lineShift](SourceRange& r) {
+    if (r.begin.valid()) r.begin.line = static_cast<std::uint32_t>(r.begin.line + lineShift);
+  };
+  for (OpenLoop& l : next.loops_)
+    shift(l.where);
+  for (Jump& j : next.jumps_)
+    shift(j.where);
+  if (next.percentAfterStart_) shift(*next.percentAfterStart_);
   startBeforeBlocks_ = startBeforeBlocks_ || (blocks_ == 0 && next.startBeforeBlocks_);
   blocks_ += next.blocks_;
   percentAfterStart_ = next.percentAfterStart_;

@@ -24,7 +24,9 @@ public:
   /// several threads): true when they are exactly what this checker would have found reading
   /// on; false, joining nothing, when they could depend on this checker's state (an open loop, a
   /// pending '%', a '%' that comes after blocks).
-  bool join(StaticChecker&& next);
+  /// lineShift: next numbered the lines of its part from a provisional first line; its findings
+  /// kept for finish() move to the lines they stand at.
+  bool join(StaticChecker&& next, std::int64_t lineShift = 0);
 
 private:
   void words(const ir::Block& b);

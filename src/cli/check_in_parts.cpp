@@ -1,6 +1,7 @@
 #include "cli/check_in_parts.h"
 
 #include <algorithm>
+#include <atomic>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -48,27 +49,9 @@ std::uint64_t lineStartFrom(std::ifstream& in, std::uint64_t from, std::uint64_t
   return 0;
 }
 
-// The line number at `offset`: one more than the LFs before it.
-std::uint32_t lineAt(std::ifstream& in, std::uint64_t offset) {
-  std::vector<char> buf(kChunk);
-  in.clear();
-  in.seekg(0);
-  std::uint64_t lines = 1;
-  for (std::uint64_t left = offset; left > 0;) {
-    in.read(buf.data(), static_cast<std::streamsize>(std::min<std::uint64_t>(left, buf.size())));
-    const auto got = static_cast<std::size_t>(in.gcount());
-    if (got == 0) break;
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < got; ++i) // a loop the compiler vectorises
-      n += buf[i] == '\n';
-    lines += n;
-    left -= got;
-  }
-  return static_cast<std::uint32_t>(lines);
-}
-
-// A part after the first: [begin, end) of the file, read on a thread of its own into a private
-// diagnostics engine, its source stopped at the first block boundary at or after end.
+// A part after the first: [begin, end) of the file, read into a private diagnostics engine by
+// whichever thread takes it, its source stopped at the first block boundary at or after end. Its
+// lines are numbered from 1: the lines before it are known only when the part before it is read.
 struct Part {
   Part(std::uint64_t b, std::uint64_t e, std::size_t errorLimit)
       : begin(b), end(e), diags(errorLimit) {}
@@ -80,21 +63,31 @@ struct Part {
   std::unique_ptr<check::StaticChecker> checker;
   std::size_t blocks = 0;
   std::exception_ptr failure;
-  std::thread thread;
 };
 
 void readPart(Session& s, Part& p, bool last) {
   const diag::Engine::Divert divert(s.diags(), p.diags);
   p.in.open(s.path(), std::ios::binary);
-  const std::uint32_t line = lineAt(p.in, p.begin);
-  p.in.clear();
   p.in.seekg(static_cast<std::streamoff>(p.begin));
   p.source = s.dialect().open(p.in, s.file(), s.diags());
-  p.source->startAt(p.begin, line);
+  p.source->startAt(p.begin, 1);
   if (!last) p.source->stopAt(p.end);
   p.checker = std::make_unique<check::StaticChecker>(s.dialect().profile(), s.diags());
   ir::Block block;
   p.blocks = readAll(*p.source, *p.checker, block);
+}
+
+// Reads the parts not yet taken, one after another, until none is left.
+void takeParts(Session& s, std::vector<std::unique_ptr<Part>>& parts,
+               std::atomic<std::size_t>& next) {
+  for (std::size_t i; (i = next++) < parts.size();) {
+    Part& p = *parts[i];
+    try {
+      readPart(s, p, i + 1 == parts.size());
+    } catch (...) {
+      p.failure = std::current_exception();
+    }
+  }
 }
 
 // The cuts between parts: line starts near equal shares of the file, in increasing order.
@@ -109,14 +102,24 @@ std::vector<std::uint64_t> cutsOf(const std::string& path, std::uint64_t size, u
   return cuts;
 }
 
-void replay(diag::Engine& to, const diag::Engine& from) {
-  for (const diag::Diagnostic& d : from.all())
-    if (d.code != diag::code::TooManyErrors) to.report(d); // the session's engine counts itself
+// The part's diagnostics, moved from its provisional line numbers to the lines they stand at.
+void replay(diag::Engine& to, const diag::Engine& from, std::int64_t lineShift) {
+  auto shift = [lineShift](SourceRange& r) {
+    if (r.begin.valid()) r.begin.line = static_cast<std::uint32_t>(r.begin.line + lineShift);
+  };
+  for (diag::Diagnostic d : from.all()) {
+    if (d.code == diag::code::TooManyErrors) continue; // the session's engine counts itself
+    shift(d.range);
+    for (diag::Note& n : d.notes)
+      shift(n.range);
+    to.report(std::move(d));
+  }
 }
 
 } // namespace
 
-CheckedBlocks checkBlocks(Session& s, check::StaticChecker& checker, unsigned jobs) {
+CheckedBlocks checkBlocks(Session& s, check::StaticChecker& checker, unsigned jobs,
+                          unsigned partsPerJob) {
   ir::Block block;
   BlockSource& first = s.source();
   std::error_code ec;
@@ -124,7 +127,9 @@ CheckedBlocks checkBlocks(Session& s, check::StaticChecker& checker, unsigned jo
   if (jobs < 2 || ec || size < 2 * kMinPartBytes || !first.canReadInParts())
     return {readAll(first, checker, block), first.failedBlocks()};
   jobs = static_cast<unsigned>(std::min<std::uint64_t>(jobs, size / kMinPartBytes));
-  const std::vector<std::uint64_t> cuts = cutsOf(s.path(), size, jobs);
+  const auto count = static_cast<unsigned>(std::min<std::uint64_t>(
+      std::uint64_t{jobs} * std::max(partsPerJob, 1u), size / kMinPartBytes));
+  const std::vector<std::uint64_t> cuts = cutsOf(s.path(), size, count);
   if (cuts.empty()) return {readAll(first, checker, block), first.failedBlocks()};
 
   std::vector<std::unique_ptr<Part>> parts;
@@ -132,39 +137,41 @@ CheckedBlocks checkBlocks(Session& s, check::StaticChecker& checker, unsigned jo
     const std::uint64_t end = i + 1 < cuts.size() ? cuts[i + 1] : size;
     parts.push_back(std::make_unique<Part>(cuts[i], end, s.diags().errorLimit()));
   }
-  for (std::size_t i = 0; i < parts.size(); ++i) {
-    Part& p = *parts[i];
-    const bool last = i + 1 == parts.size();
-    p.thread = std::thread([&s, &p, last] {
-      try {
-        readPart(s, p, last);
-      } catch (...) {
-        p.failure = std::current_exception();
-      }
-    });
-  }
-  // This thread reads the first part straight into the session, then joins the others in order.
+  // The parts after the first go to whichever thread is free: a thread on a slower core (a VM's
+  // cores need not be equal) takes fewer of them.
+  std::atomic<std::size_t> next = 0;
+  std::vector<std::thread> helpers;
   struct JoinAll {
-    std::vector<std::unique_ptr<Part>>& parts;
+    std::vector<std::thread>& threads;
     ~JoinAll() {
-      for (auto& p : parts)
-        if (p->thread.joinable()) p->thread.join();
+      for (std::thread& t : threads)
+        if (t.joinable()) t.join();
     }
-  } joinAll{parts};
+  } joinAll{helpers};
+  for (unsigned k = 1; k < jobs; ++k)
+    helpers.emplace_back([&] { takeParts(s, parts, next); });
 
+  // This thread reads the first part straight into the session, then takes parts too; the
+  // parts are joined in file order once all are read.
   std::vector<BlockSource*> used{&first}; // the sources whose blocks count
   BlockSource* reading = &first;
   reading->stopAt(cuts[0]);
   CheckedBlocks total;
   total.blocks = readAll(*reading, checker, block);
+  takeParts(s, parts, next);
+  for (std::thread& t : helpers)
+    t.join();
   for (std::size_t i = 0; i < parts.size(); ++i) {
     Part& p = *parts[i];
-    p.thread.join();
     if (p.failure) std::rethrow_exception(p.failure);
-    const std::optional<std::uint64_t> stopped = reading->stoppedAt();
+    const std::optional<SourceLoc> stopped = reading->stoppedAt();
     if (!stopped) break; // the input ended or failed before the part: nothing more to read
-    if (*stopped == p.begin && reading->stateless() && checker.join(std::move(*p.checker))) {
-      replay(s.diags(), p.diags);
+    // the part numbered its first line 1; it is the line the reading before it stopped at
+    const std::int64_t lineShift = std::int64_t{stopped->line} - 1;
+    if (stopped->offset == p.begin && reading->stateless() &&
+        checker.join(std::move(*p.checker), lineShift)) {
+      replay(s.diags(), p.diags, lineShift);
+      p.source->shiftLines(lineShift);
       total.blocks += p.blocks;
       ++total.partsTaken;
       reading = p.source.get();

@@ -34,9 +34,12 @@ public:
   virtual void startAt(std::uint64_t /*offset*/, std::uint32_t /*line*/) {}
   /// next() returns false at the first block boundary at or after `offset`; 0: at the end.
   virtual void stopAt(std::uint64_t /*offset*/) {}
-  /// After next() returned false: the offset of the boundary it stopped at, or nothing when the
-  /// input ended or failed.
-  virtual std::optional<std::uint64_t> stoppedAt() const { return std::nullopt; }
+  /// After next() returned false: where the block after the boundary it stopped at begins (its
+  /// offset and line), or nothing when the input ended or failed.
+  virtual std::optional<SourceLoc> stoppedAt() const { return std::nullopt; }
+  /// After a stop: the lines are numbered delta further from here on. A part read from a
+  /// provisional first line, once the lines before it are counted.
+  virtual void shiftLines(std::int64_t /*delta*/) {}
   /// True when reading on from here reads what a new source started here would (no state, such
   /// as NCT's G10 data records, carries over).
   virtual bool stateless() const { return false; }

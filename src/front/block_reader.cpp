@@ -125,9 +125,14 @@ void BlockReader::stopAt(std::uint64_t offset) {
   stopped_ = false;
 }
 
-std::optional<std::uint64_t> BlockReader::stoppedAt() const {
+std::optional<SourceLoc> BlockReader::stoppedAt() const {
   if (!stopped_ || fatal_) return std::nullopt;
-  return curBegin_.offset;
+  return curBegin_;
+}
+
+void BlockReader::shiftLines(std::int64_t delta) {
+  line_ = static_cast<std::uint32_t>(line_ + delta);
+  curBegin_.line = static_cast<std::uint32_t>(curBegin_.line + delta);
 }
 
 bool BlockReader::next(RawBlock& out) {

@@ -35,7 +35,9 @@ public:
   /// next() returns false at the first block boundary at or after `offset` (0: none).
   void stopAt(std::uint64_t offset);
   /// After next() returned false: the boundary it stopped at, or nothing at the end or an error.
-  std::optional<std::uint64_t> stoppedAt() const;
+  std::optional<SourceLoc> stoppedAt() const;
+  /// After a stop: the lines are numbered delta further from here on (BlockSource::shiftLines).
+  void shiftLines(std::int64_t delta);
   bool converts() const { return input_.converts(); }
 
 private:

@@ -30,7 +30,8 @@ protected:
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  CheckResult run(const std::string& text, unsigned jobs, std::size_t maxErrors = 50) {
+  CheckResult run(const std::string& text, unsigned jobs, std::size_t maxErrors = 50,
+                  unsigned partsPerJob = 1) {
     const fs::path path = dir_ / "O0001.nct";
     std::ofstream(path, std::ios::binary) << text;
     cli::CommonOptions opt;
@@ -39,7 +40,7 @@ protected:
     EXPECT_TRUE(s.open(path.string()));
     check::StaticChecker checker(s.dialect().profile(), s.diags());
     CheckResult r;
-    r.read = cli::checkBlocks(s, checker, jobs);
+    r.read = cli::checkBlocks(s, checker, jobs, partsPerJob);
     checker.finish(s.file(), r.read.failed > 0);
     for (const diag::Diagnostic& d : s.diags().all())
       r.diagnostics.push_back(fmt::format("{}:{} {} {} {}", d.range.begin.line, d.range.begin.col,
@@ -47,9 +48,11 @@ protected:
     return r;
   }
 
-  // Checks with one and two threads; returns the two-thread result after comparing them.
-  CheckResult runBoth(const std::string& text, std::size_t maxErrors = 50) {
-    const CheckResult one = run(text, 1, maxErrors), two = run(text, 2, maxErrors);
+  // Checks with one and two threads; returns the two-thread result after comparing them. One
+  // part a thread by default: the cut falls in the middle, where the tests put what crosses it.
+  CheckResult runBoth(const std::string& text, std::size_t maxErrors = 50,
+                      unsigned partsPerJob = 1) {
+    const CheckResult one = run(text, 1, maxErrors), two = run(text, 2, maxErrors, partsPerJob);
     EXPECT_EQ(one.read.blocks, two.read.blocks);
     EXPECT_EQ(one.read.failed, two.read.failed);
     EXPECT_EQ(one.read.partsTaken, 0u);
@@ -183,6 +186,27 @@ TEST_F(CheckInParts, BinaryByteInTheFirstPartEndsTheRead) {
   EXPECT_EQ(r.read.partsTaken, 0u);
   EXPECT_EQ(count(r.diagnostics, "GCX003"), 1);
   EXPECT_EQ(count(r.diagnostics, "GCXW01"), 0);
+}
+
+TEST_F(CheckInParts, PartsTakenByWhicheverThreadIsFreeReportAtTheirOwnLines) {
+  // three parts (3.2 MB in parts of at least 1 MB), each numbering its lines from 1 until the
+  // parts before it are read: warnings and errors in every part, a missing GOTO target and a
+  // '%' after blocks in the last part, all at the lines one thread reports
+  const CheckResult r = runBoth(program([](int k) {
+                                  return k == 150001      ? std::string("GOTO77")
+                                         : k == 150002    ? "%"
+                                         : k % 9973 == 0  ? "G1 X!1"
+                                         : k % 30011 == 0 ? "G0 G1 X1"
+                                                          : "";
+                                }),
+                                50, 4);
+  EXPECT_EQ(r.read.partsTaken, 2u);
+  EXPECT_EQ(r.read.blocks, static_cast<std::size_t>(kLines)); // the % too
+  EXPECT_EQ(count(r.diagnostics, "GCXW01"), 16);
+  EXPECT_EQ(count(r.diagnostics, "GCX012"), 5);
+  EXPECT_EQ(count(r.diagnostics, "GCX007"), 1);
+  ASSERT_FALSE(r.diagnostics.empty());
+  EXPECT_EQ(r.diagnostics.back(), "150001:1 2 2125 block N77 not found in this file");
 }
 
 } // namespace
