@@ -53,10 +53,16 @@ BlockBuilder::BlockBuilder(const front::RawBlock& raw, ir::Block& out, diag::Eng
   out_.sequenceText.clear();
   out_.sequenceRange = {};
   out_.programName.clear();
-  if (!reuse_) out_.words.clear();
+  if (reuse_)
+    reusable_ = out_.words.size();
+  else
+    out_.words.clear();
   out_.stmts.clear();
   out_.comments.clear();
-  out_.range = SourceRange{raw.begin, static_cast<std::uint32_t>(raw.text.size())};
+  // field by field: a SourceRange built in a temporary and then copied makes the copy's wide
+  // loads wait for the temporary's narrow stores (a failed store forwarding), every block
+  out_.range.begin = raw.begin;
+  out_.range.length = static_cast<std::uint32_t>(raw.text.size());
   out_.lastLine = raw.lastLine();
 }
 
@@ -70,33 +76,40 @@ double BlockBuilder::number(std::string_view digits, std::size_t pos) {
   return front::decimalValue(digits);
 }
 
-void BlockBuilder::skip(std::size_t pos, std::size_t len, std::string_view digits) {
+bool BlockBuilder::skip(std::size_t pos, std::size_t len, std::string_view digits, bool report) {
   std::int64_t level = 1;
   if (!digits.empty()) {
     if (!wholeNumber(digits, level) || level < 1 || level > 9) {
+      if (!report) return false;
       diags_.error(diag::code::DataOutOfRange, range(pos, len),
                    fmt::format("block skip level '{}' is out of range 1-9", digits));
       ok_ = false;
-      return;
+      return false;
     }
-    if (level == 9)
+    if (level == 9) {
+      if (!report) return false;
       diags_.warning(diag::code::SkipLevelNine, range(pos, len),
                      "block skip level 9: the manual's chapter 14 allows only 1-8 (nct.md Q3)");
+    }
   }
   out_.skipLevel = static_cast<int>(level);
+  return true;
 }
 
-void BlockBuilder::sequence(std::size_t pos, std::size_t len, std::string_view digits) {
+bool BlockBuilder::sequence(std::size_t pos, std::size_t len, std::string_view digits,
+                            bool report) {
   std::int64_t n = 0;
   if (!wholeNumber(digits, n)) {
+    if (!report) return false;
     diags_.error(diag::code::SyntaxError, range(pos, len),
                  fmt::format("block number 'N{}' must be a whole number", digits));
     ok_ = false;
-    return;
+    return false;
   }
   out_.sequence = n;
   out_.sequenceText.assign(digits);
   out_.sequenceRange = range(pos, len);
+  return true;
 }
 
 void BlockBuilder::programStart(std::size_t pos, std::string_view number) {

@@ -25,10 +25,12 @@ public:
     if (reuse_ && words_ != out_.words.size()) out_.words.resize(words_);
   }
 
-  /// `/` or `/n` at pos; digits empty for a bare `/`.
-  void skip(std::size_t pos, std::size_t len, std::string_view digits);
-  /// The first N of the block.
-  void sequence(std::size_t pos, std::size_t len, std::string_view digits);
+  /// `/` or `/n` at pos; digits empty for a bare `/`. With report false (the fast path, which
+  /// leaves any block with a diagnostic to the grammar): a level that would be reported
+  /// (out of range, or the warned-of 9) sets nothing, reports nothing and returns false.
+  bool skip(std::size_t pos, std::size_t len, std::string_view digits, bool report = true);
+  /// The first N of the block; report as for skip().
+  bool sequence(std::size_t pos, std::size_t len, std::string_view digits, bool report = true);
   /// `%` or `%O0001`.
   void programStart(std::size_t pos, std::string_view number);
   /// An address with a literal number: `X-40`, `XI-40`, `G84.2`; sign is '-', '+' or 0 (none).
@@ -36,10 +38,12 @@ public:
                    char sign, std::string_view digits);
   /// The same, for digits of at most 15 digits whose value the caller computed exactly (the
   /// same double front::decimalValue gives): such a number never has too many digits. `text`
-  /// is the value as written: the sign, if any, and the digits with no blank between. Inline:
-  /// the fast path's every word.
-  void literalWord(char letter, std::size_t pos, std::size_t len, bool incremental, bool negative,
-                   std::string_view text, double value);
+  /// is the value as written: the sign, if any, and the digits with no blank between. Always
+  /// inline: the fast path's every word, where a call's argument passing costs as much as the
+  /// work.
+  [[gnu::always_inline]] inline void literalWord(char letter, std::size_t pos, std::size_t len,
+                                                 bool incremental, bool negative,
+                                                 std::string_view text, double value);
   /// A comment whose '(' is at pos and ')' at pos+len-1.
   void comment(std::size_t pos, std::size_t len);
 
@@ -59,7 +63,7 @@ private:
   /// The next word: a new one, or with reuse the next word of the block before (reused true),
   /// whose fields still hold that block's.
   ir::Word& nextWord(bool& reused) {
-    reused = reuse_ && words_ < out_.words.size();
+    reused = words_ < reusable_; // not words.size(): a division by sizeof(Word) every word
     if (reuse_) ++words_;
     return reused ? out_.words[words_ - 1] : out_.words.emplace_back();
   }
@@ -69,12 +73,12 @@ private:
   diag::Engine& diags_;
   bool ok_ = true;
   bool reuse_ = false;
-  std::size_t words_ = 0; // with reuse_: words of this block so far
+  std::size_t words_ = 0;    // with reuse_: words of this block so far
+  std::size_t reusable_ = 0; // with reuse_: the words of the block before, to overwrite
 };
 
-inline void BlockBuilder::literalWord(char letter, std::size_t pos, std::size_t len,
-                                      bool incremental, bool negative, std::string_view text,
-                                      double value) {
+void BlockBuilder::literalWord(char letter, std::size_t pos, std::size_t len, bool incremental,
+                               bool negative, std::string_view text, double value) {
   bool reused = false;
   ir::Word& w = nextWord(reused);
   if (reused) { // the fields below set the rest

@@ -1,27 +1,11 @@
 #include "dialects/nct/fast_parser.h"
 
-#include <array>
 #include <cstdint>
 #include <string_view>
 
 namespace gcx::nct {
 
 namespace {
-
-// One piece of a block, as the scan finds it; no member initializers: the scan sets every field
-// a piece of its kind uses, and a block's buffer of pieces is left uninitialised.
-struct Piece {
-  enum Kind : unsigned char { Skip, Sequence, Word, Comment } kind;
-  char letter;
-  bool incremental;
-  bool exact;        // Word: at most 15 digits, value set
-  char sign;         // '-', '+' or none
-  std::uint32_t pos; // first byte of the piece
-  std::uint32_t len;
-  std::uint32_t digitsPos;
-  std::uint32_t digitsLen;
-  double value; // Word: the digits' value, when exact
-};
 
 bool isDigit(char c) {
   return static_cast<unsigned char>(c - '0') < 10;
@@ -40,8 +24,8 @@ constexpr double kPowersOfTen[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
 // front::decimalValue's (Clinger's fast path: a mantissa below 10^15 and a power of ten up to
 // 10^15 are exact doubles, and one division of exact operands is correctly rounded), and so many
 // digits are never too many significant ones (nct.md §1.2 rule 2). Beyond 15 digits the mantissa
-// wraps; it is not used then.
-const char* scanNumber(const char* p, double& value, bool& exact) {
+// wraps; it is not used then. Always inline: the value and exactness stay in registers.
+[[gnu::always_inline]] inline const char* scanNumber(const char* p, double& value, bool& exact) {
   const char* const start = p;
   std::uint64_t mantissa = 0;
   for (; isDigit(*p); ++p)
@@ -75,105 +59,84 @@ const char* skipBlanks(const char* p) {
 
 FastResult parseFast(const front::RawBlock& raw, ir::Block& out, diag::Engine& diags) {
   if (!raw.plain) return FastResult::Declined;
+  // One pass: each piece goes into the block as soon as it is scanned. A block declined half way
+  // is rebuilt from scratch by the grammar path, so what was written by then does not matter.
   const char* const s = raw.lexText.c_str(); // NUL-terminated: every scan below stops at it
-  // A block rarely has more than a dozen words; a fixed buffer keeps the fast path allocation-free.
-  std::array<Piece, 48> pieces;
-  std::size_t count = 0;
-  bool anyWord = false;
+  const auto at = [s](const char* q) { return static_cast<std::size_t>(q - s); };
+  BlockBuilder b(raw, out, diags, true);
   const char* p = skipBlanks(s);
-  const auto at = [&](const char* q) { return static_cast<std::uint32_t>(q - s); };
-  // leading comments may precede '/': the grammar hides comments, so `(c) /2 X1` is legal too
   // a comment's ')' is in the block: an LF inside a comment does not end it
   auto comment = [&] {
-    Piece& c = pieces[count++];
     const char* close = p;
     while (*close != ')' && *close)
       ++close;
-    c.kind = Piece::Comment;
-    c.pos = at(p);
-    c.len = at(close) - c.pos + 1;
-    p = *close ? skipBlanks(close + 1) : nullptr;
-    return p != nullptr;
+    if (!*close) return false;
+    b.comment(at(p), at(close) - at(p) + 1);
+    p = skipBlanks(close + 1);
+    return true;
   };
+  // leading comments may precede '/': the grammar hides comments, so `(c) /2 X1` is legal too
   while (*p == '(')
-    if (count == pieces.size() || !comment()) return FastResult::Declined;
+    if (!comment()) return FastResult::Declined;
   if (*p == '/') {
-    if (count == pieces.size()) return FastResult::Declined;
-    Piece& k = pieces[count++];
-    k.kind = Piece::Skip;
-    k.pos = at(p);
+    const char* const slash = p;
     p = skipBlanks(p + 1);
-    k.digitsPos = at(p);
+    const char* const digits = p;
     if (isDigit(*p) || *p == '.') {
       double unused = 0;
       bool exact = false;
       p = scanNumber(p, unused, exact);
       if (!p) return FastResult::Declined;
     }
-    k.digitsLen = at(p) - k.digitsPos;
-    k.len = at(p) - k.pos;
+    // a level with a diagnostic is the grammar path's to report
+    if (!b.skip(at(slash), at(p) - at(slash), std::string_view(digits, at(p) - at(digits)), false))
+      return FastResult::Declined;
   }
+  bool anyWord = false;
   for (p = skipBlanks(p); *p; p = skipBlanks(p)) {
-    if (count == pieces.size()) return FastResult::Declined;
     if (*p == '(') {
       if (!comment()) return FastResult::Declined;
       continue;
     }
-    const char c = *p;
-    if (!isLetter(c)) return FastResult::Declined;
-    Piece& w = pieces[count++];
-    w.kind = Piece::Word;
-    w.letter = c;
-    w.pos = at(p);
+    const char letter = *p;
+    if (!isLetter(letter)) return FastResult::Declined;
+    const char* const start = p;
     p = skipBlanks(p + 1);
-    w.incremental = *p == 'I';
-    if (w.incremental) p = skipBlanks(p + 1);
-    w.sign = 0;
+    const bool incremental = *p == 'I';
+    if (incremental) p = skipBlanks(p + 1);
+    char sign = 0;
     if (*p == '-' || *p == '+') {
-      w.sign = *p;
+      sign = *p;
       p = skipBlanks(p + 1);
     }
-    w.digitsPos = at(p);
+    const char* const digits = p;
     if (!(isDigit(*p) || *p == '.')) return FastResult::Declined;
-    p = scanNumber(p, w.value, w.exact);
+    double value;
+    bool exact;
+    p = scanNumber(p, value, exact);
     if (!p) return FastResult::Declined;
-    w.digitsLen = at(p) - w.digitsPos;
-    w.len = at(p) - w.pos;
+    const std::size_t pos = at(start), len = at(p) - pos, count = at(p) - at(digits);
     // the grammar's `sequenceNumber : N PLUS? NUMBER` takes an N before any word, without a
     // minus (a `+` is discarded, nct.md §1.2 rule 3)
-    if (c == 'N' && !anyWord && !w.incremental && w.sign != '-') w.kind = Piece::Sequence;
+    const bool sequence = letter == 'N' && !anyWord && !incremental && sign != '-';
     anyWord = true;
-  }
-
-  BlockBuilder b(raw, out, diags, true);
-  for (std::size_t k = 0; k < count; ++k) {
-    const Piece& piece = pieces[k];
-    const std::string_view digits(s + piece.digitsPos, piece.digitsLen);
-    switch (piece.kind) {
-    case Piece::Word:
-      // exact, with its sign (if any) right before the digits: the text as written is one view
-      if (piece.exact && (!piece.sign || s[piece.digitsPos - 1] == piece.sign))
-        b.literalWord(piece.letter, piece.pos, piece.len, piece.incremental, piece.sign == '-',
-                      std::string_view(digits.data() - (piece.sign ? 1 : 0),
-                                       digits.size() + (piece.sign ? 1 : 0)),
-                      piece.value);
-      else
-        b.literalWord(std::string_view(&piece.letter, 1), piece.pos, piece.len, piece.incremental,
-                      piece.sign, digits);
-      break;
-    case Piece::Skip:
-      b.skip(piece.pos, piece.len, digits);
-      break;
-    case Piece::Sequence:
-      b.sequence(piece.pos, piece.len, digits);
-      break;
-    case Piece::Comment:
-      b.comment(piece.pos, piece.len);
-      break;
+    if (sequence) {
+      if (!b.sequence(pos, len, std::string_view(digits, count), false))
+        return FastResult::Declined;
+    } else if (!exact) { // too many digits to read here; the grammar path reads or reports them
+      return FastResult::Declined;
+    } else if (!sign || digits[-1] == sign) {
+      // the sign, if any, right before the digits: the text as written is one view
+      const std::size_t signed_ = sign ? 1 : 0;
+      b.literalWord(letter, pos, len, incremental, sign == '-',
+                    std::string_view(digits - signed_, count + signed_), value);
+    } else { // `X- 5`: the text drops the blank
+      b.literalWord(std::string_view(start, 1), pos, len, incremental, sign,
+                    std::string_view(digits, count));
     }
   }
   b.finish();
-  return b.ok() ? FastResult::Parsed : FastResult::Failed;
+  return FastResult::Parsed;
 }
 
 } // namespace gcx::nct

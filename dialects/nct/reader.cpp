@@ -17,14 +17,12 @@ bool Reader::next(ir::Block& out) {
       ++stats_.failed;
       continue;
     }
-    bool ok;
-    FastResult fast = fastPath_ ? parseFast(raw_, out, diags_) : FastResult::Declined;
-    if (fast == FastResult::Declined) {
+    bool ok = true;
+    if (fastPath_ && parseFast(raw_, out, diags_) == FastResult::Parsed) {
+      ++stats_.fastPath;
+    } else {
       ok = grammar_.parse(raw_, out, diags_);
       ++stats_.grammar;
-    } else {
-      ok = fast == FastResult::Parsed;
-      ++stats_.fastPath;
     }
     if (!ok) {
       ++stats_.failed;

@@ -90,6 +90,11 @@ TEST(NctSpec_1_7, FirstNIsTheBlockNumberASecondNIsAWord) {
   EXPECT_EQ(b.words.back().number, 250);
 }
 
+// One error, whichever parse path meets it first (the fast path leaves the block to the grammar).
+TEST(NctSpec_1_7, AFractionalBlockNumberIsOneError) {
+  EXPECT_EQ(parseNct("N1.5 G0 X1").errors(), std::vector<std::string>{"1:1 2064"});
+}
+
 // A `+` is discarded (§1.2 rule 3), so `N+100` is block number 100 on both parse paths, and
 // `fmt` prints it back as `N100` without changing the block (found by the fmt round-trip fuzzer).
 TEST(NctSpec_1_7, PlusSignedFirstNIsTheBlockNumber) {
