@@ -89,10 +89,7 @@ void StaticChecker::literalFindings(const ir::Word& w, const AddressSpec& spec) 
 void StaticChecker::words(const ir::Block& b) {
   bool callBlock = false;
   for (const ir::Word& w : b.words)
-    if (w.is('G') && w.isLiteral())
-      if (auto t = gcodeTenths(w.number))
-        for (int c : profile_.macroCallGCodes10)
-          callBlock |= *t == c;
+    callBlock |= w.is('G') && w.isLiteral() && profile_.macroCallGCode(w.number);
 
   std::uint64_t groupSeen = 0; // modal groups used in this block, by bit
   int gCount = 0, mCount = 0, exclusiveM = 0;

@@ -1,5 +1,6 @@
 #include "dialect/profile.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace gcx {
@@ -19,6 +20,10 @@ void Profile::index() {
     const auto bit = static_cast<unsigned>(g.action);
     actions_[bit / 64] |= std::uint64_t{1} << (bit % 64);
   }
+  wholeMacroCalls_.fill(0);
+  for (const int t : macroCallGCodes10)
+    if (t >= 0 && t % 10 == 0 && t / 10 < 256)
+      wholeMacroCalls_[static_cast<unsigned>(t / 10) / 64] |= std::uint64_t{1} << (t / 10 % 64);
   indexed_ = true;
 }
 
@@ -41,6 +46,12 @@ std::optional<int> gcodeTenths(double value) {
   const double r = std::round(t);
   if (std::fabs(t - r) > 1e-6 || r < 0 || r > 1e7) return std::nullopt;
   return static_cast<int>(r);
+}
+
+bool Profile::macroCallByTenths(double value) const {
+  const auto t = gcodeTenths(value);
+  return t && std::find(macroCallGCodes10.begin(), macroCallGCodes10.end(), *t) !=
+                  macroCallGCodes10.end();
 }
 
 const GCodeSpec* Profile::gcodeByTenths(double value) const {

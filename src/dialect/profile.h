@@ -243,14 +243,26 @@ struct Profile {
     return gcodeByTenths(value);
   }
 
+  /// True if G<value> is one of macroCallGCodes10: a block with it is a macro call. Inline for
+  /// the whole codes G0-G255, the codes of nearly every block.
+  bool macroCallGCode(double value) const {
+    if (indexed_ && value >= 0 && value < 256 && value == static_cast<int>(value)) {
+      const auto code = static_cast<unsigned>(value);
+      return (wholeMacroCalls_[code / 64] >> (code % 64)) & 1u;
+    }
+    return macroCallByTenths(value);
+  }
+
 private:
   const AddressSpec* addressNamed(std::string_view a) const;
   const GCodeSpec* gcodeByTenths(double value) const;
+  bool macroCallByTenths(double value) const;
 
   std::array<int, 26> letters_{}; // index+1 into addresses of single letters (0: none)
   // index+1 into gcodes of the whole codes G0-G255 (0: none), the codes of nearly every block
   std::array<int, 256> wholeGCodes_{};
-  std::array<std::uint64_t, 4> actions_{}; // the actions of the table's codes, as bits
+  std::array<std::uint64_t, 4> actions_{};         // the actions of the table's codes, as bits
+  std::array<std::uint64_t, 4> wholeMacroCalls_{}; // macroCallGCodes10 among G0-G255, as bits
   bool indexed_ = false;
 };
 

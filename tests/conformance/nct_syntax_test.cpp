@@ -257,6 +257,10 @@ TEST(MacroSpec_5_4, ArgumentCollisionsAreForbiddenAddresses) {
   EXPECT_EQ(parseNct("G65 P2201 X1 X2").errors(), std::vector<std::string>{"1:14 2017"});
   EXPECT_EQ(parseNct("G65 P2201 ,C1").errors(), std::vector<std::string>{"1:11 2017"});
   EXPECT_TRUE(parseNct("G65 P2201 I1 J2 K3 I4 J5 K6").errors().empty());
+  // G66.1 (a code with tenths) and G66 make call blocks too: their letters are arguments
+  EXPECT_TRUE(parseNct("G66.1 P2201 I1 J2 K3 I4 J5 K6").errors().empty());
+  EXPECT_TRUE(parseNct("G66 P2201 I1 J2 K3 I4 J5 K6").errors().empty());
+  EXPECT_EQ(parseNct("G67 I1 I4").errors(), std::vector<std::string>{"1:8 GCX011"});
 }
 
 TEST(MacroSpec_6, PrintCommands) {
