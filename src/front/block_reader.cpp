@@ -9,8 +9,12 @@
 namespace gcx::front {
 
 namespace {
+// A loop, not find_first_not_of: that calls memchr for every byte it looks at, and a block's
+// first byte is nearly always the one that answers.
 bool isBlank(const std::string& text) {
-  return text.find_first_not_of(" \t\r") == std::string::npos;
+  for (const char c : text)
+    if (c != ' ' && c != '\t' && c != '\r') return false;
+  return true;
 }
 
 bool isPlainChar(char c) {
@@ -257,15 +261,19 @@ bool BlockReader::finishBlock(RawBlock& out) {
   out.failed = false;
   out.lineCommentAt = std::string::npos;
   reset();
-  if (!checkDialectLength(out)) return true;
-  normalize(out, lexWork);
-  // a line of only ignored characters (a stray ')', a byte order mark) is a blank line too
-  return out.failed || !isBlank(out.lexText);
+  // the checks below are calls only where they have work: the usual block has none
+  if ((rules_.maxBlockChars || rules_.warnBlockChars) && !checkDialectLength(out)) return true;
+  if (lexWork || !rules_.commentLineKeywords.empty())
+    normalize(out, lexWork);
+  else
+    out.lexText.assign(out.text); // every byte PlainText: nothing to change
+  // a line of only ignored characters (a stray ')', a byte order mark) is a blank line too;
+  // without lex work lexText is text, which is not blank
+  return out.failed || !lexWork || !isBlank(out.lexText);
 }
 
 // The dialect's own limit on a block's length, in characters (FMS-3000 254 with CR LF, WL4 80).
 bool BlockReader::checkDialectLength(RawBlock& b) {
-  if (rules_.maxBlockChars == 0 && rules_.warnBlockChars == 0) return true;
   std::size_t chars = 0;
   for (char c : b.text)
     chars += (static_cast<unsigned char>(c) & 0xC0) != 0x80; // UTF-8 continuation bytes

@@ -65,6 +65,8 @@ private:
   bool finishBlock(RawBlock& out);
   /// Appends to the block being read, up to the block length limit (then marks the overflow).
   void append(const char* bytes, std::size_t n);
+  /// The dialect's limits on a block's length (LexicalRules::maxBlockChars, warnBlockChars), where
+  /// it has any: false if the block is too long (reported, marked failed).
   bool checkDialectLength(RawBlock& b);
   void normalize(RawBlock& b, bool lexWork);
   void normalizeNonAscii(RawBlock& b, std::size_t& i, bool comment);
