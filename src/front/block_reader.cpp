@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "diag/codes.h"
+#include "front/plain_run.h"
 #include "front/utf8.h"
 
 namespace gcx::front {
@@ -80,6 +81,9 @@ void BlockReader::classifyForLexText() {
     scanClasses_[c] = static_cast<unsigned char>(classes_[c] | (lexClasses_[c] == PlainText ? 0
                                                                 : c == '\r' ? kCarriageReturn
                                                                             : kLexWork));
+  runPlain_ = true;
+  for (unsigned c = 0; c < 256; ++c)
+    if (isRunPlain(static_cast<unsigned char>(c)) && scanClasses_[c] != 0) runPlain_ = false;
 }
 
 bool BlockReader::fill() {
@@ -166,7 +170,19 @@ bool BlockReader::next(RawBlock& out) {
       const unsigned char* scan = scanClasses_.data();
       std::size_t run = pos_;
       unsigned char lex = 0;
-      for (; run + 8 <= size; run += 8) {
+      // sixteen plain bytes at a time where the dialect lets all of them be (plain_run.h), and
+      // one byte that is not; then eight, then one at a time
+      bool atCutter = false;
+      while (runPlain_) {
+        run = plainRunEnd(bytes, run, size);
+        if (run + 16 > size) break;
+        const unsigned char k = scan[bytes[run]];
+        atCutter = k & kCutter;
+        if (atCutter) break;
+        lex |= k;
+        ++run;
+      }
+      for (; !atCutter && run + 8 <= size; run += 8) {
         const unsigned char eight = scan[bytes[run]] | scan[bytes[run + 1]] | scan[bytes[run + 2]] |
                                     scan[bytes[run + 3]] | scan[bytes[run + 4]] |
                                     scan[bytes[run + 5]] | scan[bytes[run + 6]] |
@@ -174,7 +190,7 @@ bool BlockReader::next(RawBlock& out) {
         if (eight & kCutter) break;
         lex |= eight;
       }
-      for (; run < size && !(scan[bytes[run]] & kCutter); ++run)
+      for (; !atCutter && run < size && !(scan[bytes[run]] & kCutter); ++run)
         lex |= scan[bytes[run]];
       curLex_ |= lex;
       if (run > pos_) {

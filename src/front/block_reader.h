@@ -88,6 +88,7 @@ private:
   static constexpr unsigned char kCarriageReturn = 0x40; // a CR at the block's end is no work
   static constexpr unsigned char kCutter = 0x3F;         // the ByteClass bits
   std::array<unsigned char, 256> scanClasses_{};
+  bool runPlain_ = false; // every byte plainRunEnd skips is one of scanClasses_ 0
 
   std::string buf_;
   std::size_t pos_ = 0;

@@ -235,6 +235,21 @@ TEST(Wl4Syntax_1_6, AMessageMayBeCyrillicAndADotInANumberIsNone) {
   EXPECT_EQ(parseWl4("G0 X1 \xef\n", front::Encoding::Koi8R).errors(), (V{"1:7 2064"}));
 }
 
+// The message's dot is the only byte of the line that means something: the block reader must
+// see it though it stands in the middle of a long run of letters, digits and blanks.
+TEST(Wl4Syntax_1_6, APlainMessageAfterALongRunOfWords) {
+  for (bool fast : {true, false}) {
+    Parsed p = parseWl4("N010 G0 X10 Z20 .TOOL CHANGE AND CHECK THE INSERT\n",
+                        front::Encoding::Utf8, fast);
+    ASSERT_TRUE(p.errors().empty()) << p.rendered();
+    ASSERT_EQ(p.blocks.at(0).comments.size(), 1u);
+    EXPECT_EQ(p.blocks[0].comments[0].kind, ir::CommentKind::Message);
+    EXPECT_EQ(p.blocks[0].comments[0].text, "TOOL CHANGE AND CHECK THE INSERT");
+    EXPECT_EQ(p.blocks[0].sequence, 10);
+    EXPECT_EQ(p.blocks[0].words.size(), 3u); // G0 X10 Z20
+  }
+}
+
 // ---------------------------------------------------------------- §6.3 precedence
 
 TEST(Wl4Syntax_6_3, TwoLevelsLeftToRight) {
