@@ -96,10 +96,10 @@ void StaticChecker::words(const ir::Block& b) {
   auto& counts = wordCounts_; // a member: its capacity serves every block
   counts.clear();
   std::uint32_t lettersSeen = 0; // one-letter addresses, the usual words, by bit
-  // true for an address written before in this block
-  auto again = [&](std::string_view a) {
-    if (a.size() == 1 && a[0] >= 'A' && a[0] <= 'Z') {
-      const std::uint32_t bit = std::uint32_t{1} << (a[0] - 'A');
+  // true for an address written before in this block; letter: its one letter A-Z, or 0
+  auto again = [&](char letter, std::string_view a) {
+    if (letter) {
+      const std::uint32_t bit = std::uint32_t{1} << (letter - 'A');
       const bool seen = lettersSeen & bit;
       lettersSeen |= bit;
       return seen;
@@ -112,7 +112,10 @@ void StaticChecker::words(const ir::Block& b) {
 
   if (callBlock) callArguments(b);
   for (const ir::Word& w : b.words) {
-    const AddressSpec* spec = profile_.address(w.address);
+    // nearly every address is one letter: read it once
+    const char letter =
+        w.address.size() == 1 && w.address[0] >= 'A' && w.address[0] <= 'Z' ? w.address[0] : 0;
+    const AddressSpec* spec = letter ? profile_.letterAddress(letter) : profile_.address(w.address);
     if (!spec) {
       diags_.error(diag::code::ForbiddenAddress, w.range,
                    fmt::format("unknown address '{}'", w.address));
@@ -123,8 +126,8 @@ void StaticChecker::words(const ir::Block& b) {
                    fmt::format("the incremental operator I is not allowed after {}", w.address));
     }
     if (w.isLiteral()) literal(w, *spec);
-    const bool repeated = again(w.address);
-    if (w.is('G')) {
+    const bool repeated = again(letter, w.address);
+    if (letter == 'G') {
       ++gCount;
       if (callBlock && gCount > 1) {
         diags_.error(diag::code::ForbiddenAddress, w.range,
@@ -158,7 +161,7 @@ void StaticChecker::words(const ir::Block& b) {
       }
       continue;
     }
-    if (w.is('M')) {
+    if (letter == 'M') {
       if (callBlock) continue; // in a call block M is argument #13
       if (++mCount == profile_.maxMCodesPerBlock + 1)
         diags_.error(diag::code::ConflictingMCodes, w.range,

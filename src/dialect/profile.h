@@ -220,11 +220,13 @@ struct Profile {
 
   /// Inline for a single letter: the static checks ask it for every word.
   const AddressSpec* address(std::string_view a) const {
-    if (a.size() == 1 && a[0] >= 'A' && a[0] <= 'Z') {
-      const int slot = letters_[a[0] - 'A'];
-      return slot ? &addresses[slot - 1] : nullptr;
-    }
+    if (a.size() == 1 && a[0] >= 'A' && a[0] <= 'Z') return letterAddress(a[0]);
     return addressNamed(a);
+  }
+  /// The address of one letter A-Z, or null.
+  const AddressSpec* letterAddress(char letter) const {
+    const int slot = letters_[static_cast<std::size_t>(letter - 'A')];
+    return slot ? &addresses[static_cast<std::size_t>(slot - 1)] : nullptr;
   }
   /// Builds the lookup tables; call once after filling the vectors.
   void index();
