@@ -35,14 +35,25 @@ void CanonicalEmitter::begin(std::string_view code) {
   line_.append(code);
 }
 
-void CanonicalEmitter::word(char letter, double v) {
-  if (char* end = motion::putWord(line_.room(motion::kWordRoom), letter, v, 6)) {
+// A word not repeated from the line before. Out of line, so that a repeated word, copied,
+// saves no registers for the calls here.
+[[gnu::noinline]] void CanonicalEmitter::newWord(char letter, double v) {
+  char* to = line_.room(motion::kWordRoom);
+  if (char* end = motion::putWord(to, letter, v, kDecimals)) {
+    words_.store(letter, v, to, end);
     line_.commit(end);
     return;
   }
   std::string text; // a number beyond the integer fast path
-  motion::appendWord(text, letter, v, 6);
+  motion::appendWord(text, letter, v, kDecimals);
   line_.append(text);
+}
+
+void CanonicalEmitter::word(char letter, double v) {
+  if (char* end = words_.repeat(line_.room(motion::kWordRoom), letter, v))
+    line_.commit(end);
+  else
+    newWord(letter, v);
 }
 
 void CanonicalEmitter::xyz(const motion::Vec3& p) {
@@ -155,7 +166,7 @@ void CanonicalEmitter::event(const motion::Event& e) {
     if (e.perRevolution) {
       if (spindleSpeed_ <= 0) {
         line(fmt::format("(dwell of {} revolutions with the spindle stopped)",
-                         motion::formatDecimal(e.value, 6)),
+                         motion::formatDecimal(e.value, kDecimals)),
              e);
         return;
       }
@@ -168,20 +179,20 @@ void CanonicalEmitter::event(const motion::Event& e) {
   }
   case Kind::Spindle:
     spindleSpeed_ = e.value;
-    line(fmt::format("S{} {}", motion::formatDecimal(e.value, 6),
+    line(fmt::format("S{} {}", motion::formatDecimal(e.value, kDecimals),
                      e.direction > 0   ? "M3"
                      : e.direction < 0 ? "M4"
                                        : "M5"),
          e);
     return;
   case Kind::SpindleOrient: // LinuxCNC acts on M19 only with R (a bare M19 is ignored)
-    line(fmt::format("M19 R{}", motion::formatDecimal(e.value, 6)), e);
+    line(fmt::format("M19 R{}", motion::formatDecimal(e.value, kDecimals)), e);
     return;
   case Kind::ToolChange:
-    line(fmt::format("T{} M6", motion::formatDecimal(e.value, 6)), e);
+    line(fmt::format("T{} M6", motion::formatDecimal(e.value, kDecimals)), e);
     return;
   case Kind::Coolant:
-    line(fmt::format("M{}", motion::formatDecimal(e.value, 6)), e);
+    line(fmt::format("M{}", motion::formatDecimal(e.value, kDecimals)), e);
     return;
   case Kind::Stop:
     line(e.optional ? "M1" : "M0", e);
@@ -202,7 +213,7 @@ void CanonicalEmitter::event(const motion::Event& e) {
     }
     plane_ = e.plane;
     line(fmt::format("{} {} D{}", motion::planeCode(plane_), e.value > 0 ? "G41.1" : "G42.1",
-                     motion::formatDecimal(2 * e.startRadius, 6)),
+                     motion::formatDecimal(2 * e.startRadius, kDecimals)),
          e);
     return;
   case Kind::PlaneChange:

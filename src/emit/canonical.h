@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "emit/line_buffer.h"
+#include "emit/repeated_words.h"
 #include "motion/event.h"
 #include "motion/interpolator.h"
 
@@ -31,6 +32,7 @@ public:
 private:
   void begin(std::string_view code);
   void word(char letter, double v);
+  void newWord(char letter, double v);
   void xyz(const motion::Vec3& p);
   void end(const motion::Event& e);
   void line(std::string_view text, const motion::Event& e);
@@ -51,6 +53,9 @@ private:
   SourceLoc lastSource_;
   std::string lastChain_;
   LineBuffer line_; // the line being composed
+  RepeatedWords words_;
+
+  static constexpr int kDecimals = 6; // of every number written
 };
 
 } // namespace gcx::emit

@@ -56,6 +56,18 @@ TEST(Canonical, TurnsOfAHelixAreP) {
             "G3 X0 Y10 Z0 I-10 J0 P2 F100\n");
 }
 
+// A word repeated from the line before is copied (RepeatedWords): each letter keeps its own
+// last number, and a changed number is written anew.
+TEST(Canonical, RepeatedWordsKeepEachLettersOwnNumber) {
+  EXPECT_EQ(emit({feed({0, 0, -1}, {99.25, 0, -1}, 1200), feed({99.25, 0, -1}, {99.25, 1, -1}, 800),
+                  feed({99.25, 1, -1}, {-99.75, 1, -1}, 1200),
+                  feed({-99.75, 1, -1}, {-99.75, 1, 0.125}, 1200)}),
+            "G1 X99.25 Y0 Z-1 F1200\n"
+            "G1 X99.25 Y1 Z-1 F800\n"
+            "G1 X-99.75 Y1 Z-1 F1200\n"
+            "G1 X-99.75 Y1 Z0.125 F1200\n");
+}
+
 TEST(Canonical, NoNegativeZero) {
   EXPECT_EQ(emit({rapid({0, 0, 0}, {-0.0, 10, -0.0})}), "G0 X0 Y10 Z0\n");
 }
