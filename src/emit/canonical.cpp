@@ -32,7 +32,10 @@ CanonicalEmitter::CanonicalEmitter(std::ostream& out, CanonicalOptions opt)
 // the output budget (--max-output) still sees every line as soon as it is complete.
 void CanonicalEmitter::begin(std::string_view code) {
   line_.clear();
-  line_.append(code);
+  char* to = line_.room(code.size());
+  for (const char c : code) // a code of two or three letters: no library call
+    *to++ = c;
+  line_.commit(to);
 }
 
 // A word not repeated from the line before. Out of line, so that a repeated word, copied,
@@ -109,8 +112,9 @@ void CanonicalEmitter::extraWords(const motion::Extra& x) {
     if (i < 3 ? rotaryWords_ : parallelWords_) word(motion::kExtraAxisNames[i], x[i]);
 }
 
-void CanonicalEmitter::straight(const motion::Event& e, const char* code, const motion::Vec3& to,
-                                const motion::Extra& extraTo, bool withFeed) {
+void CanonicalEmitter::straight(const motion::Event& e, std::string_view code,
+                                const motion::Vec3& to, const motion::Extra& extraTo,
+                                bool withFeed) {
   begin(code);
   xyz(to);
   extraWords(extraTo);

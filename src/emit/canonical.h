@@ -37,7 +37,7 @@ private:
   void end(const motion::Event& e);
   void line(std::string_view text, const motion::Event& e);
   void feedMode(const motion::Event& e);
-  void straight(const motion::Event& e, const char* code, const motion::Vec3& to,
+  void straight(const motion::Event& e, std::string_view code, const motion::Vec3& to,
                 const motion::Extra& extraTo, bool withFeed);
   void noteExtraAxes(const motion::Event& e);
   void extraWords(const motion::Extra& x);

@@ -47,10 +47,14 @@ bool ContourCornerStage::endWaitingAt(const motion::Vec3& end) {
 
 bool ContourCornerStage::event(const motion::Event& e, motion::Sink& out) {
   if (failure_) return false;
+  if (!held_ && !request_) { // no chamfer or rounding asked for or waiting: the usual move
+    out.event(e);
+    return true;
+  }
   const bool planeMove =
       isMove(e) && (e.kind == Move::Arc || (planar(e.end) - planar(e.start)).norm() > 1e-9);
   if (!held_) {
-    if (!request_ || !planeMove) {
+    if (!planeMove) {
       out.event(e);
       return true;
     }
