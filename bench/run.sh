@@ -8,7 +8,7 @@
 # G0/G1 (lines/s counts source blocks, and separately canonical lines emitted), and runs the
 # equivalent RS274 program (without NCT's E word) through rs274.
 #   usage: bench/run.sh BUILD_DIR [LINES]
-#   (environment: HOLES=100000, RSS_LINES=10000000, EXPR_LINES=LINES/10, REPEAT=3, STARTS=100)
+#   (environment: HOLES=100000, RSS_LINES=10000000, EXPR_LINES=LINES/10, REPEAT=5, STARTS=100)
 set -euo pipefail
 export LC_ALL=C # a decimal point in EPOCHREALTIME and awk
 build=${1:-build}
@@ -37,27 +37,32 @@ rs274_measure() {  # rs274_measure LABEL N PROGRAM CANON: rs274 with a private H
   rs_rate=$(awk -v n="$2" -v s="$(cat "$work/last")" 'BEGIN { print (s > 0 ? n / s : "") }')
 }
 
-# measure LABEL LINES COMMAND... -> seconds, lines/s, peak RSS, ratio to rs_rate. The command
-# runs REPEAT times (default 3): the fastest run's seconds and the largest peak RSS count, as the
-# fastest is the one least disturbed by the rest of the machine (rs274 is measured the same way).
+# measure LABEL LINES COMMAND... -> seconds, lines/s, peak RSS, ratio to rs_rate, and the median
+# seconds. The command runs REPEAT times (default 5): the fastest run's seconds and the largest
+# peak RSS count, as the fastest is the one least disturbed by the rest of the machine (rs274 is
+# measured the same way). Five, not three: at times one of the VM's two processors runs 1.6 times
+# slower than the other, and a two-thread run is fast or slow as its threads land (README.md).
 measure() {
-  local label=$1 n=$2 secs="" kb=0 s k
+  local label=$1 n=$2 secs="" kb=0 s k all=()
   shift 2
-  for ((run = 0; run < ${REPEAT:-3}; ++run)); do
+  for ((run = 0; run < ${REPEAT:-5}; ++run)); do
     # wall time from bash's clock (microseconds; time's %e has hundredths), peak RSS from time
     local t0=$EPOCHREALTIME
     /usr/bin/time -f "%M" -o "$work/time" "$@" > /dev/null 2> "$work/err" || {
       echo "$label: FAILED"; cat "$work/err"; return 1; }
     s=$(awk -v a="$t0" -v b="$EPOCHREALTIME" 'BEGIN { printf "%.3f", b - a }')
+    all+=("$s")
     read -r k < "$work/time"
     if [ -z "$secs" ] || awk -v a="$s" -v b="$secs" 'BEGIN { exit !(a < b) }'; then secs=$s; fi
     [ "$k" -gt "$kb" ] && kb=$k
   done
-  awk -v l="$label" -v n="$n" -v s="$secs" -v k="$kb" -v r="$rs_rate" 'BEGIN {
+  local median
+  median=$(printf '%s\n' "${all[@]}" | sort -n | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }')
+  awk -v l="$label" -v n="$n" -v s="$secs" -v k="$kb" -v r="$rs_rate" -v m="$median" 'BEGIN {
     rate = (s > 0 ? n / s : 0)
     printf "%-56s %7.3f s %10.0f lines/s %6.1f MB", l, s, rate, k / 1024
     if (r != "" && r > 0) printf " %7.1fx rs274", rate / r
-    printf "\n" }'
+    printf "   (median %.3f s)\n", m }'
   echo "$secs" > "$work/last"
   echo "$kb" > "$work/last_kb"
 }
