@@ -26,6 +26,8 @@ void Interpreter::rememberPlaneMove(const motion::Event& e) {
 
 bool Interpreter::intersection(const BlockWords& w, Vec3& to, bool& over) {
   over = false;
+  // the usual block: neither marker of an over-determined element, and no line waiting for one
+  if (!w.angle && !w.r && !directionLine_) return true;
   const motion::PlaneAxes ax = motion::axesOf(state_.plane);
   const bool line = state_.motion == GAction::Rapid || state_.motion == GAction::Linear;
   const bool arc = state_.motion == GAction::ArcCW || state_.motion == GAction::ArcCCW;
