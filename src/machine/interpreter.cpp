@@ -168,7 +168,7 @@ void Interpreter::reexpress() {
   program_ = transforms_.applyInverse(machine_ - workOrigin());
 }
 
-void Interpreter::emit(motion::Event e) {
+void Interpreter::emit(motion::Event&& e) {
   if (stopped_) return;
   setProvenance(e.from, from_);
   if ((e.kind == Kind::Rapid || e.kind == Kind::Feed || e.kind == Kind::Arc) && !admitMotion(e)) {
@@ -1462,7 +1462,7 @@ void Interpreter::message(const std::string& text, const motion::Provenance& fro
   e.start = e.end = machine_;
   e.extraStart = e.extraEnd = extra_;
   e.text = text;
-  emit(e);
+  emit(motion::Event(e)); // e again below
   if (stop) {
     e.kind = Kind::Stop;
     e.text.clear();
