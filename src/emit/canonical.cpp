@@ -142,9 +142,8 @@ void CanonicalEmitter::event(const motion::Event& e) {
     return;
   case Kind::Arc: {
     feedMode(e);
-    const motion::ArcGeometry arc(e);
-    if (isSpiral(arc) && !declaredCircle(e)) {
-      for (const LinePoint& p : spiralLines(e, arc, opt_.chordTolerance))
+    if (!declaredCircle(e) && isSpiral(e)) {
+      for (const LinePoint& p : spiralLines(e, motion::ArcGeometry(e), opt_.chordTolerance))
         straight(e, "G1", p.at, p.extra, true);
       return;
     }

@@ -6,8 +6,9 @@
 
 namespace gcx::emit {
 
-bool isSpiral(const motion::ArcGeometry& arc) {
-  return arc.isSpiral() && std::fabs(arc.startRadius() - arc.endRadius()) > 1e-9;
+bool isSpiral(const motion::Event& arc) {
+  const motion::ArcRadii r = motion::arcRadii(arc);
+  return r.start != r.end && std::fabs(r.start - r.end) > 1e-9;
 }
 
 std::vector<LinePoint> spiralLines(const motion::Event& e, const motion::ArcGeometry& arc,

@@ -9,8 +9,9 @@
 
 namespace gcx::emit {
 
-/// True when the arc must be written as lines.
-bool isSpiral(const motion::ArcGeometry& arc);
+/// True when the arc must be written as lines. From the radii alone: the angles ArcGeometry
+/// adds (two atan2 and a fmod) are needed only for a spiral's lines.
+bool isSpiral(const motion::Event& arc);
 /// True when the arc's producer declares it a circle although its end is off the start radius
 /// within the dialect's arc tolerance (equal radii in the event, WL4 §3.4): canonical motion
 /// writes it as G2/G3 as programmed.

@@ -26,13 +26,21 @@ const char* planeCode(Plane p) {
   return "G17";
 }
 
+ArcRadii arcRadii(const Event& arc) {
+  const PlaneAxes ax = axesOf(arc.plane);
+  const double c1 = arc.center[ax.first], c2 = arc.center[ax.second];
+  return {std::hypot(arc.start[ax.first] - c1, arc.start[ax.second] - c2),
+          std::hypot(arc.end[ax.first] - c1, arc.end[ax.second] - c2)};
+}
+
 ArcGeometry::ArcGeometry(const Event& arc)
     : start_(arc.start), end_(arc.end), ax_(axesOf(arc.plane)), c1_(arc.center[ax_.first]),
       c2_(arc.center[ax_.second]), sign_(arc.clockwise ? -1 : 1) {
   const double s1 = start_[ax_.first] - c1_, s2 = start_[ax_.second] - c2_;
   const double e1 = end_[ax_.first] - c1_, e2 = end_[ax_.second] - c2_;
-  r0_ = std::hypot(s1, s2);
-  r1_ = std::hypot(e1, e2);
+  const ArcRadii radii = arcRadii(arc);
+  r0_ = radii.start;
+  r1_ = radii.end;
   rise_ = end_[ax_.normal] - start_[ax_.normal];
   // A spiral that starts or ends at the centre takes its direction from the other end.
   double aStart = std::atan2(s2, s1), aEnd = std::atan2(e2, e1);

@@ -37,6 +37,13 @@ inline PlaneAxes axesOf(Plane p) {
 /// The RS274/NGC code selecting the plane: "G17", "G18", "G19".
 const char* planeCode(Plane p);
 
+/// The distances of an Arc event's start and end from its centre in its plane: the radii
+/// ArcGeometry holds, without the angles (a writer asks for them to tell a spiral by).
+struct ArcRadii {
+  double start, end;
+};
+ArcRadii arcRadii(const Event& arc);
+
 class ArcGeometry {
 public:
   explicit ArcGeometry(const Event& arc);

@@ -238,7 +238,7 @@ bool FlatWriter::arcPiece(const motion::Event& e, const motion::Vec3& to, const 
 bool FlatWriter::arc(const motion::Event& e) {
   if (!feedMode(e.perRevolution, e)) return false;
   const motion::ArcGeometry geo(e);
-  if (isSpiral(geo)) {
+  if (isSpiral(e)) {
     // lines, as canonical motion writes spirals, but closer to the curve: the points rounded to
     // 0.001 mm may move 0.0007 mm in the plane, and chord plus rounding must stay within the
     // proof's 0.001 mm

@@ -109,6 +109,20 @@ TEST(ArcGeometry, HelixLength) {
   expectVec(c.point(0.25), {10, 1, 0});
 }
 
+// The radii alone (what a writer tells a spiral by) are ArcGeometry's, in each plane's own axes.
+TEST(ArcGeometry, ArcRadiiAreTheGeometrysRadii) {
+  const Event spiral = arc(Plane::XY, {90, 0, 0}, {-30, 0, 0}, {0, 0, 0}, false, 2);
+  EXPECT_DOUBLE_EQ(arcRadii(spiral).start, 90);
+  EXPECT_DOUBLE_EQ(arcRadii(spiral).end, 30);
+  // G18: Z and X are the plane's axes; Y (the normal) is not a radius
+  const Event zx = arc(Plane::ZX, {3, 7, 4}, {0, -5, 1}, {0, 0, 0}, true);
+  EXPECT_DOUBLE_EQ(arcRadii(zx).start, 5);
+  EXPECT_DOUBLE_EQ(arcRadii(zx).end, 1);
+  const ArcGeometry g(zx);
+  EXPECT_EQ(arcRadii(zx).start, g.startRadius());
+  EXPECT_EQ(arcRadii(zx).end, g.endRadius());
+}
+
 TEST(ArcGeometry, SpiralOfNctTv6) {
   // start (90,0), G3 X-30 I-90 L3: 2.5 turns, radius 90 -> 30 linear in the angle
   const ArcGeometry s(arc(Plane::XY, {90, 0, 0}, {-30, 0, 0}, {0, 0, 0}, false, 2));
