@@ -1371,7 +1371,7 @@ bool Interpreter::auxiliary(const BlockWords& w, MTiming phase) {
     }
   }
   if (spindleChanged) emitSpindle();
-  return mcodes(w, phase);
+  return w.m.empty() || mcodes(w, phase); // most blocks have none: no call to set up its frame
 }
 
 bool Interpreter::mcodes(const BlockWords& w, MTiming timing) {
