@@ -40,8 +40,8 @@ rs274_measure() {  # rs274_measure LABEL N PROGRAM CANON: rs274 with a private H
 # measure LABEL LINES COMMAND... -> seconds, lines/s, peak RSS, ratio to rs_rate, and the median
 # seconds. The command runs REPEAT times (default 5): the fastest run's seconds and the largest
 # peak RSS count, as the fastest is the one least disturbed by the rest of the machine (rs274 is
-# measured the same way). Five, not three: at times one of the VM's two processors runs 1.6 times
-# slower than the other, and a two-thread run is fast or slow as its threads land (README.md).
+# measured the same way). Five, not three: on the bench VM a two-thread run is at times fast and
+# at times slow, run after run (bench/README.md, "Why five runs").
 measure() {
   local label=$1 n=$2 secs="" kb=0 s k all=()
   shift 2
