@@ -210,11 +210,12 @@ bool Interpreter::admitMotion(const motion::Event& e) {
   // beyond a kilometre-scale machine by far, and below what any output writes in full
   constexpr double kMaxCoordinate = 1e9;
   const auto writable = [&](double v) { return std::fabs(v) < kMaxCoordinate; };
-  // the usual move at a glance: every value writable (a NaN fails each comparison), no branch
-  const bool usual =
-      (writable(e.end.x()) & writable(e.end.y()) & writable(e.end.z()) & writable(e.center.x()) &
-       writable(e.center.y()) & writable(e.center.z()) & writable(e.feed)) &&
-      (e.extraEnd.array().abs() < kMaxCoordinate).all() && e.start.allFinite();
+  // the usual move at a glance: every value writable (a NaN fails each comparison), no branch:
+  // the tests combined as integers, where `&&` would branch on each
+  const auto bit = [&](double v) { return static_cast<unsigned>(writable(v)); };
+  const bool usual = (bit(e.end.x()) & bit(e.end.y()) & bit(e.end.z()) & bit(e.center.x()) &
+                      bit(e.center.y()) & bit(e.center.z()) & bit(e.feed)) != 0 &&
+                     (e.extraEnd.array().abs() < kMaxCoordinate).all() && e.start.allFinite();
   const bool finite = usual || (e.start.allFinite() && e.end.allFinite() && e.center.allFinite() &&
                                 e.extraEnd.allFinite() && std::isfinite(e.feed));
   if (!usual && (!finite || !writable(e.end.x()) || !writable(e.end.y()) || !writable(e.end.z()) ||
