@@ -10,7 +10,6 @@ namespace gcx::fms3000 {
 
 namespace {
 
-constexpr const char* kRem = "rem";
 constexpr const char* kEndcont = "endcont";
 
 bool isLower(char c) {
