@@ -17,8 +17,10 @@
 
 #include "cli/translate_target.h"
 #include "diag/diagnostic.h"
+#include "dialect/control_flow.h"
 #include "dialect/dialect.h"
 #include "motion/xml_text.h"
+#include "translate/program_calls.h"
 
 extern char** environ;
 
@@ -30,6 +32,7 @@ namespace {
 
 struct Job {
   fs::path input;
+  const Dialect* dialect = nullptr;
   std::string relative; // as the report names it
   fs::path output;
   std::string setup;
@@ -38,7 +41,7 @@ struct Job {
   double seconds = 0;
   long peakKb = 0;
   std::string reason;
-  std::string status;         // verified, written, failed
+  std::string status;         // verified, written, failed, subprogram
   std::string kept, expanded; // the structures, from the child's note
 };
 
@@ -67,6 +70,7 @@ std::vector<Job> collect(const fs::path& root, const fs::path& outRoot, const Tr
     const auto target = expand ? translateTarget(*d, opt.to, *expand, why) : std::nullopt;
     Job j;
     j.input = f;
+    j.dialect = d;
     // by the path under root, not where a symlink points: the output stays under OUTDIR
     j.relative = f.lexically_relative(root).string();
     fs::path out = outRoot / j.relative;
@@ -80,6 +84,67 @@ std::vector<Job> collect(const fs::path& root, const fs::path& outRoot, const Tr
     jobs.push_back(std::move(j));
   }
   return jobs;
+}
+
+// What a program calls and how it ends, read block by block with its dialect's reader; a file
+// that does not read gives nothing here (its own translation reports why).
+xlate::ProgramCalls callsOf(const Job& j) {
+  std::ifstream in(j.input, std::ios::binary);
+  SourceManager sources;
+  diag::Engine diags;
+  const FileId file = sources.addFile(j.input.string());
+  const std::unique_ptr<BlockSource> source = j.dialect->open(in, file, diags);
+  xlate::CallScanner scanner(j.dialect->profile());
+  ir::Block block;
+  while (source->next(block))
+    scanner.block(block);
+  return scanner.result();
+}
+
+// A program that only runs as a subprogram is not run alone (where it would restart or fail
+// at its return until a limit stops it): one that another program of the batch calls is
+// translated with that caller; one that ends in a return with no caller in the batch is
+// reported as a subprogram. A dialect whose return ends a main program (FMS-3000 M99) runs
+// such a file as a main program.
+void markSubprograms(std::vector<Job>& jobs) {
+  std::map<std::string, std::size_t> byPath; // canonical path -> job
+  for (std::size_t i = 0; i < jobs.size(); ++i)
+    byPath[fs::weakly_canonical(jobs[i].input).string()] = i;
+  std::vector<xlate::ProgramCalls> calls(jobs.size());
+  for (std::size_t i = 0; i < jobs.size(); ++i)
+    if (jobs[i].status.empty()) calls[i] = callsOf(jobs[i]);
+  std::vector<std::string> callers(jobs.size());
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    const Job& caller = jobs[i];
+    const ControlFlow* flow = caller.dialect->profile().controlFlow;
+    std::vector<std::string> names = calls[i].files;
+    if (flow && flow->programFiles)
+      for (const std::string& unit : calls[i].units)
+        for (const std::string& name : flow->programFiles(unit, caller.input.extension().string()))
+          names.push_back(name);
+    for (const std::string& name : names) {
+      const auto it = byPath.find(fs::weakly_canonical(caller.input.parent_path() / name).string());
+      if (it == byPath.end() || it->second == i) continue;
+      std::string& by = callers[it->second];
+      if (by.find(caller.relative) == std::string::npos)
+        by += (by.empty() ? "" : ", ") + caller.relative;
+    }
+  }
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    Job& j = jobs[i];
+    if (!j.status.empty()) continue;
+    const ControlFlow* flow = j.dialect->profile().controlFlow;
+    if (!callers[i].empty()) {
+      j.status = "subprogram", j.exitCode = Ok;
+      j.reason = fmt::format("called by {}: translated with its caller", callers[i]);
+    } else if (calls[i].endsByReturn && !(flow && flow->returnInMainEnds)) {
+      j.status = "subprogram", j.exitCode = Ok;
+      j.reason = fmt::format("ends in {}, a return to its caller, and no program of the folder "
+                             "calls it: a subprogram runs only when called",
+                             calls[i].endCode);
+    }
+    if (j.status == "subprogram") j.output.clear(); // no file of its own
+  }
 }
 
 std::vector<std::string> childArguments(const Job& j, const TranslateOptions& opt) {
@@ -226,6 +291,7 @@ int runTranslateBatch(const std::string& folder, const TranslateOptions& opt) {
   }
   std::size_t skipped = 0;
   std::vector<Job> jobs = collect(fs::path(folder), outRoot, opt, skipped);
+  markSubprograms(jobs);
   const fs::path logs = outRoot / fmt::format(".gcx-logs-{}", getpid());
   fs::create_directories(logs);
 
@@ -260,20 +326,22 @@ int runTranslateBatch(const std::string& folder, const TranslateOptions& opt) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::string okStatus = opt.verify ? "verified" : "written";
-  std::size_t failed = 0;
+  std::size_t failed = 0, subprograms = 0;
   long peak = 0;
   for (const Job& j : jobs) {
-    failed += j.status != "ok";
+    failed += j.status == "failed";
+    subprograms += j.status == "subprogram";
     peak = std::max(peak, j.peakKb);
   }
   const std::string summary = fmt::format(
-      "{} programs to {} with {} jobs in {:.1f} s: {} {}, {} failed; {} other files skipped; "
+      "{} programs to {} with {} jobs in {:.1f} s: {} {}, {} failed{}; {} other files skipped; "
       "peak RSS of one translation {} kB",
-      jobs.size(), opt.to, jobsAtOnce, seconds, jobs.size() - failed, okStatus, failed, skipped,
-      peak);
+      jobs.size(), opt.to, jobsAtOnce, seconds, jobs.size() - failed - subprograms, okStatus,
+      failed, subprograms ? fmt::format(", {} subprograms not run on their own", subprograms) : "",
+      skipped, peak);
   std::cout << summary << '\n';
   for (const Job& j : jobs)
-    if (j.status != "ok") std::cout << fmt::format("failed: {}: {}\n", j.relative, j.reason);
+    if (j.status == "failed") std::cout << fmt::format("failed: {}: {}\n", j.relative, j.reason);
   writeReports(outRoot, jobs, okStatus, summary);
   return failed == 0 ? Ok : ProgramErrors;
 }

@@ -140,6 +140,46 @@ TEST_F(TranslateCli, ABatchTranslatesATreeAndReportsEachProgram) {
             std::string::npos);
 }
 
+// A subprogram is not run alone, where its M99 would restart it until a limit stops it: one
+// the batch's programs call is translated with its caller, one that nobody calls is reported.
+TEST_F(TranslateCli, ABatchTranslatesASubprogramWithItsCallerOnly) {
+  write("in/O0001.nct", "G90 G0 X0 Y0 Z5\nM98 P2 L2\nM30\n");
+  write("in/O0002.nct", "(CALLED TWICE)\nG91 G1 X10 F100\nG90\nM99\n");
+  write("in/O0003.nct", "G0 X1\nM99\n");
+  const Result r = gcx("translate in --to canonical -o out --jobs 2");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("3 programs to canonical with 2 jobs in "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(": 1 verified, 0 failed, 2 subprograms not run on their own; 0 other "
+                       "files skipped;"),
+            std::string::npos)
+      << r.out;
+  // the caller's translation holds the subprogram's two passes
+  const std::string one = readFile(dir_ / "out/O0001.ngc");
+  EXPECT_NE(one.find("\nG1 X10 Y0 Z5 F100\nG1 X20 Y0 Z5 F100\nM30\n"), std::string::npos) << one;
+  EXPECT_FALSE(fs::exists(dir_ / "out/O0002.ngc"));
+  EXPECT_FALSE(fs::exists(dir_ / "out/O0003.ngc"));
+  const std::string csv = readFile(dir_ / "out/report.csv");
+  EXPECT_NE(csv.find("\nO0002.nct,,subprogram,0,0.000,0,called by O0001.nct: "
+                     "translated with its caller,,\n"),
+            std::string::npos)
+      << csv;
+  EXPECT_NE(csv.find("\nO0003.nct,,subprogram,0,0.000,0,\"ends in M99, a return to "
+                     "its caller, and no program of the folder calls it: a subprogram runs only "
+                     "when called\",,\n"),
+            std::string::npos)
+      << csv;
+}
+
+// FMS-3000 runs a program that ends in M99 alone as if it ended in M02 (fms3000.md §2.2): a
+// batch translates it as a main program.
+TEST_F(TranslateCli, ABatchRunsAnUncalledFms3000ProgramEndingInM99) {
+  write("in/7.fms", "G90 G00 X10 Y5\nM99\n");
+  const Result r = gcx("translate in --to canonical -o out");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(readFile(dir_ / "out/report.csv").find("\n7.fms,out/7.ngc,verified,0,"),
+            std::string::npos);
+}
+
 TEST_F(TranslateCli, ABatchNeedsAnOutputFolder) {
   write("in/ONE.nct", kProgram);
   const Result r = gcx("translate in --to ngc");
