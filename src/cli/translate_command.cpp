@@ -52,6 +52,11 @@ bool verified(const std::string& source, const fs::path& result, bool resultRead
                         equiv::ProgramInput::Reader::Auto};
   equiv::EquivOptions o;
   o.gcxProgram = gcxProgramMaker(opt.common);
+  // --from names the source's dialect; the result is read in the target's, by its extension
+  CommonOptions target = opt.common;
+  target.dialect.clear();
+  target.encoding.clear();
+  b.gcxProgram = gcxProgramMaker(target);
   o.walk.tolerance = opt.tolerance;
   o.rs274 = opt.rs274;
   const equiv::EquivOutcome out = equiv::checkEquivalence(a, b, o);

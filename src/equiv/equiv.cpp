@@ -86,7 +86,7 @@ public:
              (in_.reader == ProgramInput::Reader::Auto && ngc &&
               oracle::findRs274(o_.rs274).has_value());
     if (rs274_) return prepareRs274();
-    gcx_ = o_.gcxProgram();
+    gcx_ = in_.gcxProgram ? in_.gcxProgram() : o_.gcxProgram();
     if (!gcx_->open(in_.path, in_.setup, ngc)) return false;
     if (ngc) {
       std::string text;

@@ -38,6 +38,9 @@ struct ProgramInput {
   /// Auto: `.ngc` through rs274 when it is installed, else gcx's reading of the canonical
   /// subset; everything else through gcx's interpreter.
   enum class Reader { Auto, Gcx, Rs274 } reader = Reader::Auto;
+  /// Makes this side's gcx program when it differs from EquivOptions::gcxProgram (a
+  /// translation read in its own dialect while the source's was named).
+  std::function<std::unique_ptr<GcxProgram>()> gcxProgram;
 };
 
 struct EquivOptions {

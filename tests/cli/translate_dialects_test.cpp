@@ -136,6 +136,19 @@ TEST_F(TranslateDialects, ASpeedAboveFms3000sRangeIsALocatedError) {
                    "to 9999 [GCX081]\n  S12000 M3\n  ^\n");
 }
 
+// --from names the source's dialect only: the proof reads the translation in the target's
+// (found by the translate_nct fuzz target: both were read as NCT, and every proof failed).
+TEST_F(TranslateDialects, FromNamesTheSourceDialectNotTheTranslations) {
+  write("A.txt", "G90 G0 X10 Y5\nG1 X20 F100\nM30\n");
+  for (const char* to : {"fms3000", "wl4"}) {
+    const std::string out = std::string("A.") + (to == std::string("wl4") ? "wl4" : "fms");
+    const CliResult r = gcx(std::string("translate A.txt --from nct --to ") + to + " -o " + out);
+    EXPECT_EQ(r.exitCode, 0) << to << ": " << r.err;
+    EXPECT_NE(r.err.find("verified, moves the tool like the source"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::exists(dir_ / out)) << to;
+  }
+}
+
 // A batch across dialects: every program of the tree to WL4, each proven.
 TEST_F(TranslateDialects, ABatchTranslatesEveryDialectToWl4) {
   write("in/A.nct", "G90 G0 X10 Y5\nG4 P0.5\nG1 X20 F100\nM30\n");
