@@ -1,20 +1,21 @@
 # gcx — the two commands: `make demo` and `make test`. Both install what is missing first.
-# Robustness (docs/testing.md): `make test-sanitize` (the suite under ASan+UBSan) and `make fuzz`.
+# Robustness (docs/testing.md): `make test-sanitize` (the suite under ASan+UBSan) and `make fuzz`,
+# both from one clang build with the sanitizers and libFuzzer's coverage instrumentation.
 BUILD ?= build
 SANITIZE_BUILD ?= build-sanitize
-FUZZ_BUILD ?= build-fuzz
-FUZZ_WORK ?= $(FUZZ_BUILD)/work
+FUZZ_WORK ?= $(SANITIZE_BUILD)/work
 FUZZ_SECONDS ?= 60
 FUZZ_JOBS ?= 1
 JOBS ?= $(shell nproc)
 APT_PACKAGES := antlr4 libantlr4-runtime-dev libeigen3-dev libfmt-dev libcli11-dev \
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev librapidcheck-dev libpng-dev \
-  cmake g++ make time clang libclang-rt-14-dev llvm
+  cmake g++ make time clang libclang-rt-14-dev llvm ccache
 # Optional: LinuxCNC's rs274 (the differential oracle) and chromium (renders the HTML report
 # in its test); the tests that need them are skipped without them.
 OPTIONAL_PACKAGES := linuxcnc-uspace chromium
 
-.PHONY: deps build demo test bench mutate format clean test-sanitize fuzz-build fuzz fuzz-merge
+.PHONY: deps build demo test bench mutate format clean sanitize-build test-sanitize fuzz-build fuzz \
+  fuzz-merge
 
 deps:
 	@scripts/install-deps.sh $(APT_PACKAGES) -- $(OPTIONAL_PACKAGES)
@@ -48,32 +49,37 @@ test: build
 # Every sanitizer finding is fatal and prints its stack.
 export UBSAN_OPTIONS ?= print_stacktrace=1
 
-$(SANITIZE_BUILD)/CMakeCache.txt:
-	cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=Debug -DGCX_SANITIZE=ON -DGCX_BUILD_BENCH=OFF
-
+# One clang build serves the sanitizer suite and the fuzzer: ASan+UBSan (-O1 -g) with libFuzzer's
+# coverage instrumentation, the test binary in SANITIZE_SHARDS gtest shards (a process per test
+# costs the instrumented build more than most tests), the fuzz executable beside it.
+SANITIZE_SHARDS ?= 8
 # The translation matrix (some 1,500 translations, each proven) runs the same code as the
 # per-structure translation tests: under the sanitizers it only costs CI time.
-SANITIZE_SKIP ?= ^TranslateMatrix\.
+SANITIZE_FILTER ?= -TranslateMatrix.*
 
-test-sanitize: deps $(SANITIZE_BUILD)/CMakeCache.txt
+$(SANITIZE_BUILD)/CMakeCache.txt:
+	cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ \
+	  -DGCX_SANITIZE=ON -DGCX_FUZZ=ON -DGCX_BUILD_BENCH=OFF \
+	  -DGCX_TEST_SHARDS=$(SANITIZE_SHARDS) '-DGCX_TEST_SHARD_FILTER=$(SANITIZE_FILTER)'
+
+sanitize-build: deps $(SANITIZE_BUILD)/CMakeCache.txt
 	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
-	cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS) -E '$(SANITIZE_SKIP)'
 
-$(FUZZ_BUILD)/CMakeCache.txt:
-	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ \
-	  -DGCX_FUZZ=ON -DGCX_BUILD_TESTS=OFF -DGCX_BUILD_BENCH=OFF
+test-sanitize: sanitize-build
+	cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS)
 
-fuzz-build: deps $(FUZZ_BUILD)/CMakeCache.txt
-	cmake --build $(FUZZ_BUILD) -j $(JOBS)
+fuzz-build: deps $(SANITIZE_BUILD)/CMakeCache.txt
+	cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target gcx_fuzz
 
-# Every fuzz target for FUZZ_SECONDS, FUZZ_JOBS targets at a time; prints execs, coverage and
-# corpus size per target and fails on any crash, hang (10 s) or sanitizer report.
+# Every fuzz target (or those of FUZZ_TARGETS) for FUZZ_SECONDS, FUZZ_JOBS targets at a time;
+# prints execs, coverage and corpus size per target and fails on any crash, hang (10 s) or
+# sanitizer report.
 fuzz: fuzz-build
-	scripts/fuzz.sh run $(FUZZ_BUILD) $(FUZZ_WORK) $(FUZZ_SECONDS) $(FUZZ_JOBS)
+	scripts/fuzz.sh run $(SANITIZE_BUILD) $(FUZZ_WORK) $(FUZZ_SECONDS) $(FUZZ_JOBS) $(FUZZ_TARGETS)
 
 # Minimises what the fuzzer found into tests/fuzz/corpus (the regression inputs).
 fuzz-merge: fuzz-build
-	scripts/fuzz.sh merge $(FUZZ_BUILD) $(FUZZ_WORK)
+	scripts/fuzz.sh merge $(SANITIZE_BUILD) $(FUZZ_WORK) $(FUZZ_TARGETS)
 
 bench: build
 	bench/run.sh $(BUILD)
@@ -87,4 +93,4 @@ format:
 	clang-format -i $$(git ls-files '*.cpp' '*.h')
 
 clean:
-	rm -rf $(BUILD) $(SANITIZE_BUILD) $(FUZZ_BUILD)
+	rm -rf $(BUILD) $(SANITIZE_BUILD)
