@@ -1,12 +1,16 @@
 #include "fuzz/entry_points.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
+#include <functional>
+#include <iostream>
 #include <sstream>
 #include <unistd.h>
 
+#include "cli/commands.h"
 #include "cli/execute.h"
 #include "cli/setup_dialects.h"
 #include "dialect/dialect.h"
@@ -185,32 +189,96 @@ Outcome fmtRoundTrip(const std::string& dialectName, std::string_view input) {
   const Parsed first = parseText(dialect, std::string(input), sm, diags, "O0001");
   out.violation = renderAll(diags, sm, out);
   if (first.failed || !out.violation.empty()) return out;
-  std::string printed;
+  // printed as `gcx fmt` prints: one emitter for the whole program
+  std::ostringstream text;
+  const std::unique_ptr<emit::ProgramEmitter> emitter = dialect.emitter(text);
+  emitter->beginProgram({});
   for (const ir::Block& b : first.blocks)
-    printed += printBlock(dialect, b);
+    emitter->block(b);
+  emitter->endProgram();
+  const std::string printed = text.str();
   out.outputBytes = printed.size();
   diag::Engine again(Bounds::maxErrors);
-  const Parsed second = parseText(dialect, printed, sm, again, "printed");
+  Parsed second = parseText(dialect, printed, sm, again, "printed");
+  // a dialect whose files are units (WL4 `%name ... %`) prints the unit lines a program
+  // without them is read as having
+  const auto unitLine = [](const ir::Block& b) {
+    return b.kind == ir::BlockKind::ProgramStart || b.kind == ir::BlockKind::ProgramEnd;
+  };
+  if (std::none_of(first.blocks.begin(), first.blocks.end(), unitLine))
+    std::erase_if(second.blocks, unitLine);
+  // a block of nothing (FMS-3000's tolerated bare `N`, fms3000.md §6.3) prints as a blank line
+  const auto nothing = [](const ir::Block& b) {
+    return b.kind == ir::BlockKind::Normal && b.empty() && b.comments.empty() && !b.skipLevel;
+  };
+  std::vector<ir::Block> kept = first.blocks;
+  std::erase_if(kept, nothing);
+  std::erase_if(second.blocks, nothing);
   if (second.failed) {
     out.violation =
         "the printed program does not parse: " + diag::renderText(again.all().front(), sm) +
         "--- printed:\n" + printed;
     return out;
   }
-  if (first.blocks.size() != second.blocks.size()) {
-    out.violation = fmt::format("{} blocks printed as {}:\n{}", first.blocks.size(),
-                                second.blocks.size(), printed);
+  if (kept.size() != second.blocks.size()) {
+    out.violation =
+        fmt::format("{} blocks printed as {}:\n{}", kept.size(), second.blocks.size(), printed);
     return out;
   }
-  for (std::size_t i = 0; i < first.blocks.size(); ++i) {
+  for (std::size_t i = 0; i < kept.size(); ++i) {
     // compared as JSON values, not text: numbers by value, so `X-0` printed as `X0` is the same
-    const nlohmann::json a = ir::toJson(first.blocks[i], false);
+    const nlohmann::json a = ir::toJson(kept[i], false);
     const nlohmann::json b = ir::toJson(second.blocks[i], false);
     if (a != b) {
       out.violation = fmt::format("block {} changes in the round trip:\n  {}\n  {}\nprinted: {}", i,
-                                  a.dump(), b.dump(), printBlock(dialect, first.blocks[i]));
+                                  a.dump(), b.dump(), printBlock(dialect, kept[i]));
       return out;
     }
+  }
+  return out;
+}
+
+Outcome translateToEveryTarget(const std::string& dialect, std::string_view input) {
+  const fs::path program = writeProgramFiles(dialectNamed(dialect), input);
+  Outcome out;
+  for (const std::string to : {"nct", "fms3000", "wl4", "canonical", "ngc"}) {
+    if (to == dialect) continue;
+    cli::TranslateOptions opt;
+    opt.common.dialect = dialect;
+    opt.common.maxErrors = Bounds::maxErrors;
+    opt.common.maxJumps = Bounds::maxJumps;
+    opt.common.maxBlocks = Bounds::maxBlocks;
+    opt.common.maxMoves = Bounds::maxMoves;
+    opt.common.maxOutput = Bounds::maxOutputBytes;
+    opt.common.jobs = 1;
+    opt.to = to;
+    const Dialect* target = findDialect(to);
+    opt.output =
+        (workFolder() / ("out-" + to + (target ? target->extensions.front() : ".ngc"))).string();
+    // no LinuxCNC: gcx reads the canonical output itself, so every run is the same everywhere
+    opt.rs274 = (workFolder() / "no-rs274").string();
+    // what translate says goes to a buffer: the verdict is in its text
+    std::ostringstream said;
+    std::streambuf* const err = std::cerr.rdbuf(said.rdbuf());
+    std::streambuf* const log = std::clog.rdbuf(said.rdbuf());
+    const int rc = cli::runTranslate(program.string(), opt);
+    std::cerr.rdbuf(err);
+    std::clog.rdbuf(log);
+    out.errors += rc != 0;
+    out.outputBytes += said.str().size();
+    // what shops rely on: a translation is written only when it is proven; one that fails
+    // (the source does not read, the target cannot say it, or the proof finds a difference)
+    // leaves no file
+    const bool written = fs::exists(opt.output);
+    if (written != (rc == 0)) {
+      out.violation = fmt::format("the translation to {} exited {} and {} a file:\n{}", to, rc,
+                                  written ? "wrote" : "did not write", said.str());
+      return out;
+    }
+    if (rc != 0 && out.firstError.empty())
+      out.firstError = said.str().find("does not move the tool like") != std::string::npos
+                           ? "differs: " + to
+                           : "refused: " + to;
   }
   return out;
 }
@@ -229,15 +297,25 @@ Outcome readSetup(std::string_view input) {
 namespace {
 struct Target {
   std::string name;
-  Outcome (*run)(std::string_view);
+  std::string seedExtension; // the files that seed it
+  std::function<Outcome(std::string_view)> run;
 };
+// Three targets per dialect of the registry (a dialect added later is fuzzed without an edit
+// here), the translation of NCT programs to every target, and the setup reader.
 const std::vector<Target>& targets() {
-  static const std::vector<Target> all = {
-      {"check_nct", [](std::string_view in) { return checkProgram("nct", in); }},
-      {"expand_nct", [](std::string_view in) { return expandCanonical("nct", in); }},
-      {"fmt_nct", [](std::string_view in) { return fmtRoundTrip("nct", in); }},
-      {"setup_json", &readSetup},
-  };
+  static const std::vector<Target> all = [] {
+    std::vector<Target> v;
+    for (const Dialect& d : dialects()) {
+      const std::string name = d.name, ext = d.extensions.front();
+      v.push_back({"check_" + name, ext, [name](auto in) { return checkProgram(name, in); }});
+      v.push_back({"expand_" + name, ext, [name](auto in) { return expandCanonical(name, in); }});
+      v.push_back({"fmt_" + name, ext, [name](auto in) { return fmtRoundTrip(name, in); }});
+    }
+    v.push_back(
+        {"translate_nct", ".nct", [](auto in) { return translateToEveryTarget("nct", in); }});
+    v.push_back({"setup_json", ".json", &readSetup});
+    return v;
+  }();
   return all;
 }
 } // namespace
@@ -250,6 +328,12 @@ const std::vector<std::string>& targetNames() {
     return v;
   }();
   return names;
+}
+
+const std::string& seedExtension(std::string_view target) {
+  for (const Target& t : targets())
+    if (t.name == target) return t.seedExtension;
+  std::abort();
 }
 
 Outcome runTarget(std::string_view target, std::string_view input) {

@@ -43,12 +43,21 @@ Outcome expandCanonical(const std::string& dialect, std::string_view input);
 /// without error to the same IR.
 Outcome fmtRoundTrip(const std::string& dialect, std::string_view input);
 
+/// `gcx translate` of the input (a program of the dialect, split at `@@` lines as for
+/// expandCanonical) to every other target, each proven by gcx itself (no rs274). Property: a
+/// translation that exits 0 wrote its file, one that fails (refused, or its proof found a
+/// difference) wrote none. `firstError` names the first failure ("differs: canonical").
+Outcome translateToEveryTarget(const std::string& dialect, std::string_view input);
+
 /// The setup JSON reader (`--setup`). Property: errors are located in the input.
 Outcome readSetup(std::string_view input);
 
-/// The fuzz targets by name (check_nct, expand_nct, fmt_nct, setup_json): the names of the
-/// fuzz executables (fuzz_<name>) and of the corpus folders (tests/fuzz/corpus/<name>).
+/// The fuzz targets by name: check_<d>, expand_<d> and fmt_<d> for every dialect d of the
+/// registry, translate_nct and setup_json; the names of the corpus folders
+/// (tests/fuzz/corpus/<name>) and of GCX_FUZZ_TARGET, which picks the fuzz executable's target.
 const std::vector<std::string>& targetNames();
+/// The file extension of the programs that seed the named target (".nct", ".json").
+const std::string& seedExtension(std::string_view target);
 /// Runs the named target on one input; aborts on an unknown name.
 Outcome runTarget(std::string_view target, std::string_view input);
 

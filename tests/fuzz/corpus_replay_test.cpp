@@ -2,6 +2,9 @@
 // crash, a broken property or unbounded output, and the harness itself does what it claims.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
+#include "dialect/dialect.h"
 #include "fuzz/entry_points.h"
 #include "support/test_support.h"
 
@@ -39,6 +42,34 @@ TEST(FuzzCorpus, EveryInputReplaysWithinBounds) {
     }
   }
   EXPECT_GT(replayed, 0u);
+}
+
+// The targets come from the dialect registry: a dialect added later is fuzzed too.
+TEST(FuzzHarness, EveryDialectOfTheRegistryHasItsThreeTargets) {
+  const std::vector<std::string>& names = fuzz::targetNames();
+  for (const std::string& d : dialectNames())
+    for (const char* kind : {"check_", "expand_", "fmt_"})
+      EXPECT_NE(std::find(names.begin(), names.end(), kind + d), names.end()) << kind << d;
+  EXPECT_EQ(names.size(), 3 * dialectNames().size() + 2); // and translate_nct, setup_json
+}
+
+TEST(FuzzHarness, Wl4CheckTargetReportsTheLocatedError) {
+  const Outcome out = runTarget("check_wl4", "%P\nG0 X1\nL7\nM30\n%\n");
+  EXPECT_EQ(out.errors, 1u);
+  EXPECT_EQ(out.firstError.substr(0, 4), "3:1 ");
+  EXPECT_EQ(out.violation, "");
+}
+
+// A plain program translates to fms3000, wl4, canonical and ngc, each proven and written.
+TEST(FuzzHarness, TranslateTargetProvesEveryTranslation) {
+  const Outcome out = runTarget("translate_nct", "G90 G0 X10 Y5\nG1 X20 F100\nM30\n");
+  EXPECT_EQ(out.errors, 0u);
+  EXPECT_EQ(out.violation, "");
+  // a program that does not read fails every translation and writes no file: no violation
+  const Outcome bad = runTarget("translate_nct", "G1 X1.2.3 F100\nM30\n");
+  EXPECT_EQ(bad.errors, 4u);
+  EXPECT_EQ(bad.firstError, "refused: fms3000");
+  EXPECT_EQ(bad.violation, "");
 }
 
 TEST(FuzzHarness, CheckTargetReportsTheLocatedError) {
