@@ -56,7 +56,7 @@ bool verified(const std::string& source, const fs::path& result, bool resultRead
   CommonOptions target = opt.common;
   target.dialect.clear();
   target.encoding.clear();
-  b.gcxProgram = gcxProgramMaker(target);
+  o.gcxProgramB = gcxProgramMaker(target);
   o.walk.tolerance = opt.tolerance;
   o.rs274 = opt.rs274;
   const equiv::EquivOutcome out = equiv::checkEquivalence(a, b, o);

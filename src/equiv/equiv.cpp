@@ -65,8 +65,9 @@ std::string oneLine(std::string s) {
 /// text).
 class Side : public ProgramSide {
 public:
-  Side(const ProgramInput& in, const EquivOptions& o, motion::Sink* tap)
-      : in_(in), o_(o), sink_(queue_, tap) {}
+  Side(const ProgramInput& in, const EquivOptions& o, motion::Sink* tap,
+       std::function<std::unique_ptr<GcxProgram>()> maker)
+      : in_(in), o_(o), maker_(std::move(maker)), sink_(queue_, tap) {}
 
   const std::string& name() const override { return in_.path; }
   const SourceManager& sources() const override { return gcx_ ? gcx_->sources() : sources_; }
@@ -86,7 +87,7 @@ public:
              (in_.reader == ProgramInput::Reader::Auto && ngc &&
               oracle::findRs274(o_.rs274).has_value());
     if (rs274_) return prepareRs274();
-    gcx_ = in_.gcxProgram ? in_.gcxProgram() : o_.gcxProgram();
+    gcx_ = maker_();
     if (!gcx_->open(in_.path, in_.setup, ngc)) return false;
     if (ngc) {
       std::string text;
@@ -197,6 +198,7 @@ private:
 
   const ProgramInput& in_;
   const EquivOptions& o_;
+  std::function<std::unique_ptr<GcxProgram>()> maker_; // this side's gcx program
   EventQueue queue_;
   QueueSink sink_;
   bool rs274_ = false;
@@ -217,8 +219,9 @@ private:
 EquivOutcome checkEquivalence(const ProgramInput& a, const ProgramInput& b,
                               const EquivOptions& options) {
   EquivOutcome out;
-  auto sa = std::make_shared<Side>(a, options, options.tapA);
-  auto sb = std::make_shared<Side>(b, options, options.tapB);
+  auto sa = std::make_shared<Side>(a, options, options.tapA, options.gcxProgram);
+  auto sb = std::make_shared<Side>(b, options, options.tapB,
+                                   options.gcxProgramB ? options.gcxProgramB : options.gcxProgram);
   out.a = sa;
   out.b = sb;
   if (!sa->prepare() || !sb->prepare()) return out;

@@ -38,15 +38,15 @@ struct ProgramInput {
   /// Auto: `.ngc` through rs274 when it is installed, else gcx's reading of the canonical
   /// subset; everything else through gcx's interpreter.
   enum class Reader { Auto, Gcx, Rs274 } reader = Reader::Auto;
-  /// Makes this side's gcx program when it differs from EquivOptions::gcxProgram (a
-  /// translation read in its own dialect while the source's was named).
-  std::function<std::unique_ptr<GcxProgram>()> gcxProgram;
 };
 
 struct EquivOptions {
   WalkOptions walk;
   /// Makes the gcx side's program (with the caller's options: --lib, limits, ...).
   std::function<std::unique_ptr<GcxProgram>()> gcxProgram;
+  /// Makes B's program when it differs from A's (a translation read in its own dialect while
+  /// --from names the source's); empty: gcxProgram.
+  std::function<std::unique_ptr<GcxProgram>()> gcxProgramB;
   std::string rs274 = "rs274"; // executable: a path, or a name looked up in PATH
   double rs274TimeoutSeconds = 600;
   motion::Sink* tapA = nullptr; // receives every event of A, on A's thread
