@@ -1,6 +1,7 @@
 #include "translate/program_calls.h"
 
 #include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 
 #include "dialect/control_flow.h"
@@ -18,16 +19,26 @@ bool callsAProgram(FlowAction a) {
          a == FlowAction::ModalCall || a == FlowAction::ModalCallEveryBlock;
 }
 
+// The digits of a literal that can name a program; none for a value no program number has (a
+// dialect's reader rejects those, but this scan must not depend on it: the conversions below
+// take whole numbers of at most 15 digits).
+std::optional<std::string> nameDigits(const ir::Word* w) {
+  if (!w || !w->isLiteral() || !(std::fabs(w->number) < 1e15)) return std::nullopt;
+  std::string digits = programDigits(*w);
+  if (digits.size() > 15) return std::nullopt;
+  return digits;
+}
+
 // The program a call row names in block b, when it is written as a literal.
 std::optional<std::string> calledUnit(const Remap& r, const ir::Word& code, const ir::Block& b) {
   switch (r.program) {
-  case ProgramSource::Word: {
-    const ir::Word* w = b.find(r.programWord);
-    if (!w || !w->isLiteral()) return std::nullopt;
-    return programFromDigits(r, programDigits(*w)).unit;
+  case ProgramSource::Word:
+  case ProgramSource::CodeDigits: {
+    const std::optional<std::string> digits =
+        nameDigits(r.program == ProgramSource::Word ? b.find(r.programWord) : &code);
+    if (!digits) return std::nullopt;
+    return programFromDigits(r, *digits).unit;
   }
-  case ProgramSource::CodeDigits:
-    return programFromDigits(r, programDigits(code)).unit;
   case ProgramSource::Fixed:
     return r.fixedProgram;
   case ProgramSource::None:
