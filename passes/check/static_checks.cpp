@@ -46,9 +46,25 @@ void StaticChecker::block(const ir::Block& b) {
                                profile_.minSequenceNumber, profile_.maxSequenceNumber));
     labels_.insert(*b.sequence);
   }
-  for (const ir::Stmt& s : b.stmts)
+  for (const ir::Stmt& s : b.stmts) {
     statement(s);
+    for (const ir::Expr* e : {&s.target, &s.value})
+      finiteLiterals(*e);
+    if (s.cond) finiteLiterals(s.cond->lhs), finiteLiterals(s.cond->rhs);
+    for (const ir::Word& a : s.args)
+      if (!a.isLiteral()) finiteLiterals(a.expr);
+  }
   words(b);
+}
+
+// A number no double holds (a literal of 400 digits) would be read as infinity and printed as
+// `inf`, which no dialect reads: an error where it is written, in an expression as in a word.
+void StaticChecker::finiteLiterals(const ir::Expr& e) {
+  if (e.kind == ir::ExprKind::Number && !std::isfinite(e.number))
+    diags_.error(diag::code::DataOutOfRange, e.range,
+                 "the number is beyond the range of a double (about 1.8e308)");
+  for (const ir::Expr& a : e.args)
+    finiteLiterals(a);
 }
 
 namespace {
@@ -125,7 +141,10 @@ void StaticChecker::words(const ir::Block& b) {
       diags_.error(callBlock ? diag::code::SyntaxError : diag::code::IncrementalNotAllowed, w.range,
                    fmt::format("the incremental operator I is not allowed after {}", w.address));
     }
-    if (w.isLiteral()) literal(w, *spec);
+    if (w.isLiteral())
+      literal(w, *spec);
+    else
+      finiteLiterals(w.expr);
     const bool repeated = again(letter, w.address);
     if (letter == 'G') {
       ++gCount;

@@ -35,6 +35,7 @@ private:
   void dataRecord(const ir::Block& b);
   void callArguments(const ir::Block& b);
   void statement(const ir::Stmt& s);
+  void finiteLiterals(const ir::Expr& e);
 
   struct OpenLoop {
     int id;
