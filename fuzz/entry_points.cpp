@@ -15,6 +15,7 @@
 #include "cli/setup_dialects.h"
 #include "dialect/dialect.h"
 #include "emit/canonical.h"
+#include "front/encoding_output.h"
 #include "ir/dump.h"
 #include "machine/setup.h"
 #include "passes/check/static_checks.h"
@@ -189,13 +190,16 @@ Outcome fmtRoundTrip(const std::string& dialectName, std::string_view input) {
   const Parsed first = parseText(dialect, std::string(input), sm, diags, "O0001");
   out.violation = renderAll(diags, sm, out);
   if (first.failed || !out.violation.empty()) return out;
-  // printed as `gcx fmt` prints: one emitter for the whole program
+  // printed as `gcx fmt` prints: one emitter for the whole program, in the dialect's encoding
   std::ostringstream text;
-  const std::unique_ptr<emit::ProgramEmitter> emitter = dialect.emitter(text);
+  front::EncodingOutput encoded(text, dialect.textEncoding());
+  std::ostream utf8(&encoded);
+  const std::unique_ptr<emit::ProgramEmitter> emitter = dialect.emitter(utf8);
   emitter->beginProgram({});
   for (const ir::Block& b : first.blocks)
     emitter->block(b);
   emitter->endProgram();
+  if (!encoded.finish()) return out; // a character the encoding lacks: gcx fmt refuses it
   const std::string printed = text.str();
   out.outputBytes = printed.size();
   diag::Engine again(Bounds::maxErrors);

@@ -233,7 +233,11 @@ motion::Vec3 initialWorkOrigin(Session& s, const machine::Setup& setup) {
   return machine::Interpreter(s.dialect().profile(), setup, discard, s.diags()).workOrigin();
 }
 
-AtomicOutput::AtomicOutput(std::string path) : path_(std::move(path)) {
+AtomicOutput::AtomicOutput(std::string path, front::Encoding encoding) : path_(std::move(path)) {
+  if (encoding != front::Encoding::Utf8) {
+    encoded_ = std::make_unique<front::EncodingOutput>(out_, encoding);
+    encodedStream_ = std::make_unique<std::ostream>(encoded_.get());
+  }
   std::error_code ec;
   // a device or pipe (/dev/null, /dev/full) is written directly: it cannot be replaced
   direct_ = !path_.empty() && fs::exists(path_, ec) && !fs::is_regular_file(path_, ec) &&
@@ -265,6 +269,13 @@ AtomicOutput::~AtomicOutput() {
 
 bool AtomicOutput::commit() {
   done_ = true;
+  if (encoded_ && !encoded_->finish()) {
+    reportUsage(fmt::format("{}: cannot write: {}", path_.empty() ? "standard output" : path_,
+                            encoded_->error()));
+    file_.close();
+    discard();
+    return false;
+  }
   out_.flush();
   if (!file_.close()) {
     reportUsage(fmt::format("{}: cannot write: {}", path_.empty() ? "standard output" : path_,

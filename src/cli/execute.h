@@ -1,10 +1,12 @@
 // Runs a program through the interpreter into a motion sink: what expand, run and plot share.
 #pragma once
 #include <functional>
+#include <memory>
 #include <optional>
 
 #include "cli/output_file.h"
 #include "cli/session.h"
+#include "front/encoding_output.h"
 #include "machine/setup.h"
 #include "motion/event.h"
 
@@ -57,9 +59,11 @@ std::uint64_t outputBudgetFor(const CommonOptions& opt, std::uint64_t programByt
 /// an empty path means standard output. Every write, the flush and the close are checked.
 class AtomicOutput {
 public:
-  explicit AtomicOutput(std::string path);
+  /// `encoding`: what the text written in UTF-8 is converted to (a dialect's program in its
+  /// own encoding, front/encoding_output.h).
+  explicit AtomicOutput(std::string path, front::Encoding encoding = front::Encoding::Utf8);
   ~AtomicOutput();
-  std::ostream& stream() { return out_; }
+  std::ostream& stream() { return encoded_ ? *encodedStream_ : out_; }
   /// False (with a message) if the temporary file cannot be created.
   bool ok();
   /// Moves the result into place; false (with a message) on failure.
@@ -71,6 +75,8 @@ private:
   std::string path_, tmp_;
   CheckedFile file_;
   std::ostream out_{&file_};
+  std::unique_ptr<front::EncodingOutput> encoded_; // only for an encoding other than UTF-8
+  std::unique_ptr<std::ostream> encodedStream_;
   bool direct_ = false; // a device or pipe: no temporary file
   bool done_ = false;
 };

@@ -55,7 +55,7 @@ int expandToDialect(Session& s, const Dialect& target, const ExpandOptions& opt,
                 " has no canned cycles, and expanding cycles is not implemented yet");
     return UsageError;
   }
-  AtomicOutput out(opt.output);
+  AtomicOutput out(opt.output, s.dialect().textEncoding()); // the program's own encoding
   PrintOutput print(opt.common, opt.output.empty());
   if (!out.ok() || !print.ok()) return UsageError;
   macro::ProgramLibrary library(s.dialect(), s.sources(), s.diags(), opt.common.libraryDirs);

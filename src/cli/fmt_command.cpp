@@ -1,5 +1,6 @@
-// gcx fmt: the IR printed back as normalised text of the same dialect. The output goes to a
-// temporary file first, so an error never leaves a partial output behind.
+// gcx fmt: the IR printed back as normalised text of the same dialect, in the encoding it was
+// read in. The output goes to a temporary file first, so an error never leaves a partial output
+// behind.
 #include "cli/commands.h"
 #include "cli/execute.h"
 #include "cli/session.h"
@@ -10,7 +11,7 @@ namespace gcx::cli {
 int runFmt(const std::string& file, const std::string& output, const CommonOptions& opt) {
   Session s(opt);
   if (!s.open(file)) return UsageError;
-  AtomicOutput out(output);
+  AtomicOutput out(output, s.dialect().textEncoding()); // in the dialect's own encoding
   if (!out.ok()) return UsageError;
   check::StaticChecker checker(s.dialect().profile(), s.diags());
   std::unique_ptr<emit::ProgramEmitter> emitter = s.dialect().emitter(out.stream());

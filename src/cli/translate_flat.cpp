@@ -162,7 +162,8 @@ int writeFlatMotion(const std::string& input, const TranslateTarget& target,
                     const TranslateOptions& opt, const std::string& output,
                     const FlatAttempt& attempt) {
   Session s(opt.common);
-  AtomicOutput out(output);
+  // the target's program in the target's encoding (WL4: KOI8-R), as its proof reads it back
+  AtomicOutput out(output, target.dialect ? target.dialect->textEncoding() : front::Encoding::Utf8);
   if (!out.ok()) return UsageError;
   SourceManager* sources = nullptr;
   if (const int rc = run(input, target, opt, &out.stream(), attempt.note, attempt.keepCycles,

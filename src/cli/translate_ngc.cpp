@@ -57,7 +57,8 @@ NgcStructure writeNeutralNgc(const Dialect& source, const std::string& input,
       fs::remove_all(path, ec);
     }
   } discard{stage};
-  const StructuredTarget target{&ngc::structuredSpelling(), &ngc::makeEmitter, "ngc", true};
+  const StructuredTarget target{&ngc::structuredSpelling(), &ngc::makeEmitter, "ngc", true,
+                                front::Encoding::Utf8};
   StructuredAttempt st = writeStructuredDialect(source, target, input, stage, "main.ngc", opt);
   if (!st.written) {
     result.unkept = st.tried ? st.unkept : "the program has no structure to keep";

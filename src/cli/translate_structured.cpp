@@ -103,6 +103,7 @@ StructuredTarget structuredTarget(const Dialect& target) {
   t.spelling = xlate::structuredSpellingFor(target.name);
   t.emitter = target.emitter;
   t.name = target.name;
+  t.encoding = target.textEncoding();
   return t;
 }
 
@@ -214,8 +215,14 @@ StructuredAttempt writeStructuredDialect(const Dialect& source, const Structured
       return a;
     }
     const fs::path path = stage / name;
+    std::string why;
+    const std::optional<std::string> text = front::encodeText(f.text, target.encoding, why);
+    if (!text) { // the line of a program that is not written would say nothing
+      a.unkept = "its text " + why.substr(std::min(why.find("holds"), why.size()));
+      return a;
+    }
     std::ofstream out(path, std::ios::binary);
-    out << f.text;
+    out << *text;
     if (!out) {
       a.unkept = fmt::format("cannot write {}", path.string());
       return a;

@@ -35,6 +35,7 @@ struct StructuredTarget {
   /// Cycles alone are reason enough to write the structured program (LinuxCNC, whose flat motion
   /// keeps none); otherwise only subprograms, loops, jumps or variables are.
   bool forCycles = false;
+  front::Encoding encoding = front::Encoding::Utf8; // what its files are written in
 };
 
 /// The structured target of a dialect, or none when gcx writes no structure in it.

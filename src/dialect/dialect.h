@@ -60,8 +60,10 @@ struct Dialect {
   /// and programs kept, instead of the expansion's flat blocks (WL4, docs/translation.md).
   bool keepsStructureToItself = false;
 
+  /// The encoding its programs are read and written in.
+  front::Encoding textEncoding() const { return encoding.value_or(lexicalRules().encoding); }
   std::unique_ptr<BlockSource> open(std::istream& in, FileId file, diag::Engine& diags) const {
-    return openSource(in, file, diags, encoding.value_or(lexicalRules().encoding));
+    return openSource(in, file, diags, textEncoding());
   }
 };
 

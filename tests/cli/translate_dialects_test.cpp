@@ -149,6 +149,26 @@ TEST_F(TranslateDialects, FromNamesTheSourceDialectNotTheTranslations) {
   }
 }
 
+// A WL4 program is written in KOI8-R, its media code (wl4.md §1.1): the comments a structured
+// translation keeps read back as written. A character KOI8-R lacks keeps no structure; the flat
+// motion is written instead, and the note says why.
+TEST_F(TranslateDialects, Wl4IsWrittenInKoi8r) {
+  write("O0001.nct", "G90 G0 X0 Y0 Z5 (\u041F\u041E\u0414\u0412\u041E\u0414)\nM98 P2\nM30\n");
+  write("O0002.nct", "G1 X10 F100\nM99\n");
+  const CliResult r = gcx("translate O0001.nct --to wl4 -o A.wl4");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(read("A.wl4").find("\nG90 G0 X0 Y0 Z5 $\xF0\xEF\xE4\xF7\xEF\xE4\nL02\n"),
+            std::string::npos)
+      << read("A.wl4");
+  write("O0003.nct", "G0 X1 (5 \u20AC)\nM98 P2\nM30\n");
+  const CliResult e = gcx("translate O0003.nct --to wl4 -o B.wl4");
+  EXPECT_EQ(e.exitCode, 0) << e.err;
+  EXPECT_NE(e.err.find("structure not kept: its text holds U+20AC, which koi8-r has no code for; "
+                       "run out into motion: subprogram calls (O0003.nct:2)"),
+            std::string::npos)
+      << e.err;
+}
+
 // A batch across dialects: every program of the tree to WL4, each proven.
 TEST_F(TranslateDialects, ABatchTranslatesEveryDialectToWl4) {
   write("in/A.nct", "G90 G0 X10 Y5\nG4 P0.5\nG1 X20 F100\nM30\n");
