@@ -205,12 +205,12 @@ Outcome fmtRoundTrip(const std::string& dialectName, std::string_view input) {
   diag::Engine again(Bounds::maxErrors);
   Parsed second = parseText(dialect, printed, sm, again, "printed");
   // a dialect whose files are units (WL4 `%name ... %`) prints the unit lines a program
-  // without them is read as having
-  const auto unitLine = [](const ir::Block& b) {
-    return b.kind == ir::BlockKind::ProgramStart || b.kind == ir::BlockKind::ProgramEnd;
-  };
-  if (std::none_of(first.blocks.begin(), first.blocks.end(), unitLine))
-    std::erase_if(second.blocks, unitLine);
+  // without them is read as having (`%MAIN` before a file's first block, `%` after its last)
+  for (const ir::BlockKind unitLine : {ir::BlockKind::ProgramStart, ir::BlockKind::ProgramEnd}) {
+    const auto is = [unitLine](const ir::Block& b) { return b.kind == unitLine; };
+    if (std::none_of(first.blocks.begin(), first.blocks.end(), is))
+      std::erase_if(second.blocks, is);
+  }
   // a block of nothing (FMS-3000's tolerated bare `N`, fms3000.md §6.3) prints as a blank line
   const auto nothing = [](const ir::Block& b) {
     return b.kind == ir::BlockKind::Normal && b.empty() && b.comments.empty() && !b.skipLevel;

@@ -144,8 +144,13 @@ std::string printExpr(const ir::Expr& e) {
 }
 
 std::string printBlock(const ir::Block& b) {
-  if (b.kind == ir::BlockKind::ProgramStart) return "%" + b.programName;
-  if (b.kind == ir::BlockKind::ProgramEnd) return "%";
+  if (b.kind == ir::BlockKind::ProgramStart || b.kind == ir::BlockKind::ProgramEnd) {
+    // a unit line keeps its comments (`%P $PLATE`), as fmt keeps every comment
+    std::string line = b.kind == ir::BlockKind::ProgramStart ? "%" + b.programName : "%";
+    for (const ir::Comment& c : b.comments)
+      appendItem(line, (c.kind == ir::CommentKind::Message ? "." : "$") + c.text);
+    return line;
+  }
   std::string out;
   if (b.skipLevel) out += "/";
   if (b.sequence) appendItem(out, "N" + b.sequenceText);

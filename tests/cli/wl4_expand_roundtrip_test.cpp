@@ -88,6 +88,15 @@ TEST_F(Wl4ExpandRoundTrip, AContourCycleKeptWithoutItsContourIsAnErrorNotAWrongP
   }
 }
 
+// fmt keeps the comments of a unit's lines (found by the fmt_wl4 fuzz target: `%P$PLATE`
+// came out as `%P`).
+TEST_F(Wl4ExpandRoundTrip, FmtKeepsTheCommentsOfUnitLines) {
+  write("c.wl4", "%P$PLATE 60\nG0 X1\nM2\n% $END\n");
+  const CliResult r = gcx("fmt c.wl4");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out, "%P $PLATE 60\nG0 X1\nM2\n% $END\n");
+}
+
 TEST_F(Wl4ExpandRoundTrip, AKoi8rFileAndItsUtf8TwinGiveIdenticalResults) {
   // "$ ДЕТАЛЬ ВАЛ" in KOI8-R bytes and in UTF-8: comments are the only place for Cyrillic (§1.1)
   const std::string koi8 = "%P\n$ \xE4\xE5\xF4\xE1\xEC\xF8 \xF7\xE1\xEC\nG0 X10 Y5\n"
