@@ -107,7 +107,8 @@ bool Expander::run(const LoadedProgram& main) {
 bool Expander::endOfProgram(const Frame& f) {
   if (stack_.size() == 1) { // end of the main file without a program end (nct.md Q31)
     done_ = true;
-    return machine_.endOfFile();
+    const std::vector<ir::Block>& blocks = f.program->blocks;
+    return machine_.endOfFile(blocks.empty() ? SourceRange{} : blocks.back().range);
   }
   // a called program must end with the dialect's return code (its Return row)
   std::string code = "a return", spec;

@@ -1471,11 +1471,12 @@ void Interpreter::message(const std::string& text, const motion::Provenance& fro
   }
 }
 
-bool Interpreter::endOfFile() {
+bool Interpreter::endOfFile(SourceRange lastBlock) {
   if (ended_) return true;
   const char* message = profile_.machine.endOfFileError;
   if (message && !pendingProfile_ && !directionLine_) // finish() reports those first
-    return fail(diag::code::EndWithoutM30, blockRange_, message);
+    return fail(diag::code::EndWithoutM30, blockRange_.begin.valid() ? blockRange_ : lastBlock,
+                message);
   finish();
   return !stopped_;
 }

@@ -112,7 +112,8 @@ public:
   void finish();
   /// The main program's file ran out: finish(), or the dialect's error when a program must end
   /// with an end code (MachineRules::endOfFileError). False after an error.
-  bool endOfFile();
+  /// `lastBlock`: where the error points when no NC block ran (a file of only G25 L2).
+  bool endOfFile(SourceRange lastBlock = {});
   /// For `--to nct` without cycle expansion: canned-cycle blocks pass through unexecuted; the
   /// programmed position follows the hole positions in the plane (not the drilling axis).
   void setDeferCycles(bool on) { deferCycles_ = on; }

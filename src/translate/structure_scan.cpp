@@ -74,11 +74,10 @@ std::vector<StructureAt> scanStructures(const std::vector<ir::Block>& blocks, co
       if (!w.isLiteral()) kinds.push_back(Structure::Variable);
       if (!w.isLiteral() || w.address.empty()) continue;
       if (w.is('G'))
-        for (const GCodeSpec& g : p.gcodes)
-          if (g.code10 == static_cast<int>(w.number * 10 + 0.5) &&
-              (g.action == GAction::DrillCycle || g.action == GAction::LevelDrillCycle ||
-               g.action == GAction::TurningCycle))
-            kinds.push_back(Structure::Cycle);
+        if (const GCodeSpec* g = p.gcode(w.number); // the table's own lookup: any value is safe
+            g && (g->action == GAction::DrillCycle || g->action == GAction::LevelDrillCycle ||
+                  g->action == GAction::TurningCycle))
+          kinds.push_back(Structure::Cycle);
       if (p.controlFlow && p.controlFlow->remaps.mayMatch(w.address))
         if (const Remap* r = p.controlFlow->remaps.find(w.address, w.number))
           if (const std::optional<Structure> s = remapped(*r)) kinds.push_back(*s);

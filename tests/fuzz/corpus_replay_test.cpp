@@ -44,6 +44,14 @@ TEST(FuzzCorpus, EveryInputReplaysWithinBounds) {
   EXPECT_GT(replayed, 0u);
 }
 
+// FMS-3000 wants M02 or M30 at the end (fms3000.md §2.2): the error points at the last block
+// even when no block reached the machine (found by expand_fms3000: it had no location).
+TEST(FuzzHarness, Fms3000EndWithoutM30PointsAtTheLastBlock) {
+  const Outcome out = runTarget("expand_fms3000", "G25 L 2");
+  EXPECT_EQ(out.firstError, "1:1 GCX038");
+  EXPECT_EQ(out.violation, "");
+}
+
 // The targets come from the dialect registry: a dialect added later is fuzzed too.
 TEST(FuzzHarness, EveryDialectOfTheRegistryHasItsThreeTargets) {
   const std::vector<std::string>& names = fuzz::targetNames();
