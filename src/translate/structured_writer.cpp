@@ -867,6 +867,11 @@ bool UnitWriter::flow(const Flow& f, const Step& s) {
   case FlowKind::Call: {
     const auto it = unitNames_.find(f.unit);
     if (it == unitNames_.end()) return fail(f.range, "the called program", "it was not loaded");
+    // the target names its main program by its file or a heading, not as a call names a
+    // subprogram (FMS-3000 `P019`): a program that calls itself keeps no structure (found by
+    // the translate_nct fuzz target: the FMS-3000 call read 'O0001' as a number)
+    if (f.unit == in_.units.front().name)
+      return fail(f.range, "a call of the main program", "the target calls only subprograms");
     kept_.add("subprogram calls", f.range);
     if (!t_.maxCallTimes || f.times <= t_.maxCallTimes) {
       t_.call(t_.callsAlone ? open(f.range) : last(f.range), it->second, f.times);
